@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
-# The main job on a fresh machine: install dependencies, build the release preset, and run it on
-# the game data in ../shared/data (or $NPRQ_DATA).
-# Until the engine lands this is the inspection tools over the bundled data.
+# The main job on a fresh machine: install dependencies, build the release preset, then run a
+# headless timedemo of demo.dem on the game data in ../shared/data (or $NPRQ_DATA) with the
+# `classic` renderer. Without game data it shows the built-in showroom and saves a screenshot.
+# Extra arguments go to nprquake (e.g. +r_plugin null, -width 1024 -height 768).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release -j "$(nproc)"
 data=${NPRQ_DATA:-../shared/data}
-bin=build/release/bin
-if [ ! -d "$data/lq1" ]; then
-    echo "main.sh: no game data at $data/lq1 (set NPRQ_DATA); nothing to inspect" >&2
-    exit 1
+export SDL_VIDEODRIVER=${SDL_VIDEODRIVER:-offscreen}
+engine=build/release/bin/nprquake
+userdir=build/release/user
+if [ -d "$data/lq1" ]; then
+    exec "$engine" -userdir "$userdir" -basedir "$data" -game lq1 "$@" +timedemo demo +quit
 fi
-"$bin/demotool" info "$data/lq1/demo.dem"
-"$bin/mdltool" info "$data/lq1/progs"
+echo "main.sh: no game data at $data/lq1 (set NPRQ_DATA): showing the built-in showroom" >&2
+exec "$engine" -userdir "$userdir" -basedir "$data" "$@" \
+    +wait +wait +wait +screenshot build/release/showroom.png +quit

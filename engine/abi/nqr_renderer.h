@@ -165,8 +165,9 @@ enum nqr_surface_flags {
     NQR_SURFACE_PLANE_BACK = 1u << 2 /* the face uses the back side of its BSP plane */
 };
 
-/* One BSP face: a convex polygon, its vertices in winding order (counter-clockwise seen from the
- * front in GL terms after the view transform — Quake stores them clockwise from the front). */
+/* One BSP face: a convex polygon, its vertices counter-clockwise seen from the front (the side
+ * `normal` points to), GL's default front face. (Quake's files store them clockwise; the
+ * engine reverses them.) */
 typedef struct nqr_surface {
     uint32_t size;
     uint32_t first_vertex, num_vertices; /* range in nqr_brush_model.positions / vertex_ids */

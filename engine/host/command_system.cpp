@@ -156,4 +156,10 @@ bool CommandSystem::expand(std::string_view text, std::string_view what) {
     return true;
 }
 
+std::string CommandSystem::take_pending_text() {
+    std::string text(buffer_.pending());
+    buffer_.clear();
+    return text;
+}
+
 }  // namespace nq

@@ -84,6 +84,9 @@ class CommandSystem {
     // Ends the current execute() after the running command (the `wait` command).
     void request_wait() { wait_requested_ = true; }
     bool buffer_empty() const { return buffer_.empty(); }
+    // Removes and returns everything still buffered (a demo holds the rest of a command line
+    // such as "+timedemo demo +quit" until it ends, then inserts it back).
+    std::string take_pending_text();
     const CommandBuffer& buffer() const { return buffer_; }
 
     // Runs one command now (not through the buffer).

@@ -81,7 +81,7 @@ class Cvar {
     bool user_archived_ = false;  // `seta` asked for archiving; survives re-registration
     bool notifying_ = false;      // inside its own change callbacks
     std::vector<Callback> callbacks_;
-    CvarValue view_{};
+    CvarValue view_{sizeof(CvarValue), 0.0f, 0, "", 0};
 };
 
 // "between 0 and 10", "of at least 0", "of at most 10"; empty for a non-numeric cvar.

@@ -1,0 +1,60 @@
+// A demo being played: the demo player, the client state it feeds, and the level (map and
+// models) the client's precache list names. When the demo changes map, the level is reloaded
+// between the two callbacks so the renderer can drop and re-register its models.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/level.h"
+#include "client/demo_player.h"
+
+namespace nq {
+
+class Vfs;
+
+struct DemoSessionCallbacks {
+    std::function<void()> level_unloading;           // models are about to be freed
+    std::function<void(Level&)> level_loaded;         // register the new models
+    std::function<void(std::string_view)> print;      // console text, warnings
+    std::function<void(std::string_view)> center_print;
+    std::function<void(std::string_view)> stuff_text;  // commands the server sent
+};
+
+class DemoSession {
+public:
+    DemoSession(const Vfs* vfs, DemoSessionCallbacks callbacks);
+    ~DemoSession();
+
+    // Opens "<name>" or "<name>.dem" through the VFS; "" on success, else the reason.
+    std::string start(const std::string& name, DemoMode mode);
+    void stop();
+    bool active() const { return player_.has_value(); }
+
+    // Plays one host frame; returns Ended when the demo finished (or failed) in it.
+    FrameStatus frame(double frame_time);
+
+    const std::string& name() const { return name_; }
+    DemoMode mode() const { return mode_; }
+    ClientState& client() { return *client_; }
+    Level& level() { return level_; }
+    const DemoPlayer* player() const { return player_ ? &*player_ : nullptr; }
+    bool level_ready() const { return level_.loaded() && client_ && client_->signed_on(); }
+
+private:
+    void on_new_level();
+    void drain_client_text();
+
+    const Vfs* vfs_;
+    DemoSessionCallbacks callbacks_;
+    Level level_;
+    std::unique_ptr<ClientState> client_;
+    std::optional<DemoPlayer> player_;
+    std::string name_;
+    DemoMode mode_ = DemoMode::Playback;
+    uint32_t generation_ = 0;
+};
+
+}  // namespace nq

@@ -1,0 +1,309 @@
+#include "app/engine.h"
+
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <thread>
+
+#include "common/file_io.h"
+#include "console/console_font.h"
+#include "formats/bsp.h"
+#include "host/config_writer.h"
+
+namespace nq {
+
+namespace {
+
+constexpr const char* kDefaultPlugin = "classic";
+
+std::string executable_dir() {
+    std::error_code ec;
+    auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? std::string(".") : exe.parent_path().string();
+}
+
+int contents_at(void* user, const Vec3& point) {
+    const Bsp* bsp = static_cast<const Bsp*>(user);
+    return bsp ? point_contents(*bsp, 0, {point[0], point[1], point[2]}) : 0;
+}
+
+}  // namespace
+
+Engine::Engine(const CommandLine& command_line)
+    : command_line_(command_line), options_(read_launch_options(command_line)) {
+    host_.set_print([this](std::string_view text) { print(text); });
+    start_seconds_ = seconds();
+}
+
+Engine::~Engine() {
+    demo_.reset();
+    dispatch_.reset();
+    plugins_.reset();
+    console_drawer_.reset();
+    gpu_timers_.shutdown();
+}
+
+double Engine::seconds() const {
+    using Clock = std::chrono::steady_clock;
+    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
+void Engine::print(std::string_view text) {
+    std::string line(text);
+    if (line.empty() || line.back() != '\n') line += '\n';
+    std::fwrite(line.data(), 1, line.size(), stdout);
+    std::fflush(stdout);
+    if (console_) console_->print(line);
+}
+
+std::string Engine::user_dir() const {
+    if (auto dir = command_line_.value("-userdir")) return *dir;
+    const char* home = std::getenv("HOME");
+    return std::string(home && *home ? home : ".") + "/.nprquake";
+}
+
+bool Engine::start() {
+    for (const auto& e : options_.errors) print("command line: " + e);
+    cvars_.r_plugin = host_.cvars().register_cvar(
+        {"r_defaultplugin", kDefaultPlugin, kCvarArchive,
+         "renderer plugin loaded at start-up (r_plugin sets it)", {}, {}});
+    cvars_.fov = host_.cvars().register_cvar(
+        {"fov", "90", kCvarArchive, "horizontal field of view in degrees", 10.0f, 170.0f});
+    cvars_.host_maxfps = host_.cvars().register_cvar(
+        {"host_maxfps", "250", kCvarArchive,
+         "frame rate cap outside timedemo (0 = uncapped)", 0.0f, 10000.0f});
+
+    mount_game_data();
+    if (!open_window()) return false;
+    console_ = std::make_unique<Console>(host_);
+    console_->set_screen_size(window_->drawable_width(), window_->drawable_height());
+    if (auto drawer = ConsoleDrawer::create()) {
+        console_drawer_.emplace(std::move(drawer.value()));
+        if (game_data_.gfx_wad && game_data_.palette) {
+            if (auto font = load_conchars_font(*game_data_.gfx_wad, *game_data_.palette)) {
+                console_drawer_->set_font(font.value());
+            }
+        }
+    } else {
+        print("console: " + drawer.error().message);
+    }
+    gpu_timers_.init(true);
+
+    HostServicesWiring wiring;
+    wiring.host = &host_;
+    wiring.vfs = vfs_ ? &*vfs_ : nullptr;
+    wiring.gpu_timers = &gpu_timers_;
+    wiring.log = [this](int, std::string_view text) { print(text); };
+    wiring.trace = [this](const float s[3], const float e[3], nqr_trace* out) {
+        const Bsp* bsp = demo_ ? demo_->level().world_bsp() : nullptr;
+        if (!bsp) return;
+        BspTrace t = trace_hull(*bsp, 0, {s[0], s[1], s[2]}, {e[0], e[1], e[2]});
+        out->fraction = t.fraction;
+        for (int k = 0; k < 3; ++k) {
+            out->end[k] = t.end[k];
+            out->plane_normal[k] = t.plane_normal[k];
+        }
+        out->plane_dist = t.plane_dist;
+        out->start_solid = t.start_solid ? 1 : 0;
+    };
+    wiring.gl_proc_address = &VideoWindow::gl_proc_address;
+    services_ = std::make_unique<HostServices>(std::move(wiring));
+    auto palette = game_data_.palette_bytes();
+    uint8_t pal[768];
+    std::copy(palette.begin(), palette.end(), pal);
+    services_->set_palette(pal);
+    if (game_data_.colormap) {
+        services_->set_colormap(game_data_.colormap->table.data(), game_data_.colormap->table.size());
+    }
+    std::string plugin_dir = command_line_.value("-plugindir").value_or(executable_dir() + "/plugins");
+    plugins_ = std::make_unique<PluginHost>(*services_, plugin_dir);
+    dispatch_ = std::make_unique<RenderDispatch>(*plugins_, &gpu_timers_);
+
+    DemoSessionCallbacks callbacks;
+    callbacks.print = [this](std::string_view t) { print(t); };
+    callbacks.center_print = [this](std::string_view t) { console_->center_print(t); };
+    // Commands inside demos are shown, not run: a downloaded demo must not drive the console.
+    callbacks.stuff_text = [](std::string_view) {};
+    callbacks.level_unloading = [this] { release_level_models(); };
+    callbacks.level_loaded = [this](Level& level) { register_level_models(level); };
+    demo_ = std::make_unique<DemoSession>(vfs_ ? &*vfs_ : nullptr, std::move(callbacks));
+
+    register_commands();
+    host_.set_file_reader([this](const std::string& path) -> std::optional<std::string> {
+        std::string game = options_.game.value_or("id1");
+        auto user = read_file(user_dir() + "/" + game + "/" + path);
+        if (user) return std::string(user->begin(), user->end());
+        if (!vfs_) return std::nullopt;
+        auto bytes = vfs_->read(path);
+        if (!bytes) return std::nullopt;
+        return std::string(bytes->begin(), bytes->end());
+    });
+    host_.queue_startup(command_line_);
+    host_.commands().execute();  // config.cfg, autoexec.cfg, then the +commands
+    load_initial_plugin();
+    if (!vfs_ && !demo_->active()) show_showroom(true);
+    last_frame_seconds_ = seconds();
+    return true;
+}
+
+void Engine::mount_game_data() {
+    std::string basedir = options_.basedir.value_or(".");
+    auto config = VfsConfig::for_game(basedir, options_.game.value_or(""));
+    auto vfs = Vfs::mount(config);
+    if (!vfs) {
+        print("no game data: " + vfs.error().message + " — showing the built-in showroom");
+        return;
+    }
+    vfs_.emplace(std::move(vfs.value()));
+    for (const auto& w : vfs_->warnings()) print("warning: " + w);
+    game_data_ = load_game_data(&*vfs_);
+    for (const auto& w : game_data_.warnings) print("warning: " + w);
+}
+
+bool Engine::open_window() {
+    VideoOptions video;
+    video.width = options_.width.value_or(640);
+    video.height = options_.height.value_or(480);
+    video.fullscreen = options_.fullscreen.value_or(false);
+    auto window = VideoWindow::create(video);
+    if (!window) {
+        print("cannot open a window: " + window.error().message +
+              " (headless? try SDL_VIDEODRIVER=offscreen)");
+        exit_status_ = 1;
+        return false;
+    }
+    window_.emplace(std::move(window.value()));
+    const GlInfo& gl = window_->gl_info();
+    print("GL_RENDERER: " + gl.renderer + "\nGL_VERSION: " + gl.version);
+    return true;
+}
+
+void Engine::load_initial_plugin() {
+    if (plugins_->active()) return;
+    for (const std::string& name : {cvars_.r_plugin->string(), std::string(kDefaultPlugin),
+                                    std::string("null")}) {
+        std::string why = dispatch_->load_plugin(name);
+        if (why.empty()) {
+            print("renderer: " + plugins_->active_name());
+            return;
+        }
+        print("r_plugin: " + why);
+    }
+}
+
+int Engine::run() {
+    while (!quit_) frame();
+    write_config();
+    return exit_status_;
+}
+
+void Engine::frame() {
+    double now = seconds();
+    double frame_time = now - last_frame_seconds_;
+    last_frame_seconds_ = now;
+    handle_events();
+    host_.commands().execute();
+    console_->update(now - start_seconds_);
+    bool timing = demo_->active() && demo_->mode() == DemoMode::TimeDemo;
+    if (demo_->active()) {
+        FrameStatus status = demo_->frame(frame_time);
+        for (auto it = demo_schedule_.begin(); it != demo_schedule_.end();) {
+            if (demo_->player() && demo_->player()->frames() >= it->first) {
+                host_.commands().add_text(it->second + "\n");
+                it = demo_schedule_.erase(it);
+            } else {
+                ++it;
+            }
+        }
+        if (status == FrameStatus::Ended) {
+            end_demo();
+            timing = false;
+        }
+    }
+    render(frame_time);
+    if (first_frame_seconds_ < 0) {
+        first_frame_seconds_ = seconds() - start_seconds_;
+        print("start-up to first frame: " + std::to_string(first_frame_seconds_) + " s");
+    }
+    if (timing) frame_times_.record(seconds() - now);
+    ++frame_count_;
+    if (!timing && cvars_.host_maxfps->value() > 0) {
+        double budget = 1.0 / cvars_.host_maxfps->value() - (seconds() - now);
+        if (budget > 0) std::this_thread::sleep_for(std::chrono::duration<double>(budget));
+    }
+}
+
+void Engine::handle_events() {
+    InputEvent event;
+    while (window_->poll_event(event)) {
+        if (event.type == InputEventType::Quit) quit_ = true;
+        if (event.type == InputEventType::Resize) {
+            console_->set_screen_size(window_->drawable_width(), window_->drawable_height());
+        }
+        console_->handle_event(event);
+    }
+    window_->set_text_input(console_->is_open());
+}
+
+CameraSetup Engine::camera_for(const ViewResult& view) const {
+    CameraSetup camera;
+    camera.origin = {view.origin[0], view.origin[1], view.origin[2]};
+    camera.angles = {view.angles[0], view.angles[1], view.angles[2]};
+    camera.fov_x = cvars_.fov->value();
+    camera.viewport[2] = window_->drawable_width();
+    camera.viewport[3] = window_->drawable_height();
+    return camera;
+}
+
+void Engine::render(double frame_time) {
+    glViewport(0, 0, window_->drawable_width(), window_->drawable_height());
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gpu_timers_.begin_frame();
+    double real_time = seconds() - start_seconds_;
+    if (demo_->active() && demo_->level_ready()) {
+        render_demo(real_time, static_cast<float>(frame_time));
+    } else if (showroom_) {
+        render_showroom(real_time, static_cast<float>(frame_time));
+    }
+    if (console_drawer_) console_drawer_->draw(*console_);
+    gpu_timers_.end_frame();
+    window_->swap();
+}
+
+void Engine::render_demo(double real_time, float frame_time) {
+    Level& level = demo_->level();
+    ViewSettings settings;
+    settings.contents_at = &contents_at;
+    settings.contents_user = const_cast<Bsp*>(level.world_bsp());
+    ViewResult view = compute_view(demo_->client(), view_state_, settings);
+    const nqr_frame& frame =
+        scene_.build(level, demo_->client(), view, camera_for(view), real_time, frame_time);
+    dispatch_->draw(frame);
+}
+
+void Engine::render_showroom(double real_time, float frame_time) {
+    CameraSetup camera = Showroom::default_camera(window_->drawable_width(),
+                                                  window_->drawable_height());
+    camera.fov_x = cvars_.fov->value();
+    dispatch_->draw(showroom_->build(scene_, camera, real_time, real_time, frame_time));
+}
+
+void Engine::write_config() {
+    std::string dir = user_dir() + "/" + options_.game.value_or("id1");
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    std::string error = ::nq::save_config(dir + "/" + kConfigFile, host_.cvars(), host_.bindings());
+    if (!error.empty()) print("config: " + error);
+}
+
+int run_nprquake(int argc, char** argv) {
+    Engine engine(CommandLine::from_main(argc, argv));
+    if (!engine.start()) return 1;
+    return engine.run();
+}
+
+}  // namespace nq

@@ -1,0 +1,118 @@
+// nprquake: the engine that ties everything together. It owns the host core (cvars, commands),
+// the virtual filesystem, the window, the console, the renderer plugins and what they draw
+// (a demo's level, or the showroom), and runs the frame loop:
+//
+//   events -> command buffer -> demo (client state) -> scene (nqr_frame) -> plugin hooks
+//   -> console -> swap -> timedemo statistics
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/demo_session.h"
+#include "app/game_data.h"
+#include "app/host_services.h"
+#include "app/render_dispatch.h"
+#include "app/scene_builder.h"
+#include "app/showroom.h"
+#include "client/view.h"
+#include "console/console.h"
+#include "console/console_drawer.h"
+#include "fs/vfs.h"
+#include "host/command_line.h"
+#include "host/host_core.h"
+#include "host/launch_options.h"
+#include "plugin/plugin_host.h"
+#include "video/frame_stats.h"
+#include "video/gpu_pass_timers.h"
+#include "video/video_window.h"
+
+namespace nq {
+
+struct EngineCvars {
+    Cvar* r_plugin = nullptr;
+    Cvar* fov = nullptr;
+    Cvar* host_maxfps = nullptr;
+};
+
+class Engine {
+public:
+    explicit Engine(const CommandLine& command_line);
+    ~Engine();
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    // Mounts data, opens the window, loads the renderer; false (after printing why) when the
+    // engine cannot run at all.
+    bool start();
+    // Runs frames until `quit`; returns the process exit status.
+    int run();
+
+    // Console output: the console, and stdout so headless runs and logs see everything.
+    void print(std::string_view text);
+
+private:
+    // engine.cpp
+    void mount_game_data();
+    bool open_window();
+    void load_initial_plugin();
+    void frame();
+    void render(double frame_time);
+    void render_demo(double real_time, float frame_time);
+    void render_showroom(double real_time, float frame_time);
+    CameraSetup camera_for(const ViewResult& view) const;
+    void handle_events();
+    double seconds() const;
+    void write_config();
+    std::string user_dir() const;
+
+    // engine_models.cpp
+    void register_level_models(Level& level);
+    void release_level_models();
+    void show_showroom(bool on);
+
+    // engine_commands.cpp
+    void register_commands();
+    void start_demo(const std::string& name, DemoMode mode);
+    void end_demo();
+    void report_timedemo();
+    void screenshot(const std::string& name);
+    void swap_plugin(const std::string& name);
+
+    CommandLine command_line_;
+    LaunchOptions options_;
+    HostCore host_;
+    EngineCvars cvars_;
+    std::optional<Vfs> vfs_;
+    GameData game_data_;
+    std::optional<VideoWindow> window_;
+    GpuPassTimers gpu_timers_;
+    std::unique_ptr<Console> console_;
+    std::optional<ConsoleDrawer> console_drawer_;
+    std::unique_ptr<HostServices> services_;
+    std::unique_ptr<PluginHost> plugins_;
+    std::unique_ptr<RenderDispatch> dispatch_;
+    std::unique_ptr<DemoSession> demo_;
+    SceneBuilder scene_;
+    ViewState view_state_;
+    std::unique_ptr<Showroom> showroom_;
+    bool showroom_models_registered_ = false;
+    bool level_models_registered_ = false;
+
+    // Timedemo: per-frame times, and the command text that waits for the demo to end.
+    FrameTimeRecorder frame_times_;
+    std::string after_demo_text_;
+    std::vector<std::pair<uint64_t, std::string>> demo_schedule_;  // demo_at FRAME "commands"
+    double start_seconds_ = 0;
+    double last_frame_seconds_ = 0;
+    double first_frame_seconds_ = -1;  // for the start-up-to-first-frame report
+    uint64_t frame_count_ = 0;
+    bool quit_ = false;
+    int exit_status_ = 0;
+};
+
+int run_nprquake(int argc, char** argv);
+
+}  // namespace nq

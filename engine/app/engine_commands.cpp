@@ -1,0 +1,167 @@
+// The engine's console commands: demos, timedemo, renderer plugins, screenshots, showroom.
+#include <epoxy/gl.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "app/engine.h"
+#include "video/bench_record.h"
+#include "video/screenshot.h"
+
+namespace nq {
+
+namespace {
+
+std::string format(const char* fmt, double a, double b = 0, double c = 0, double d = 0) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
+    return buf;
+}
+
+}  // namespace
+
+void Engine::register_commands() {
+    CommandSystem& c = host_.commands();
+    c.add_command("quit", [this](const CommandArgs&) { quit_ = true; }, "leave the engine");
+    c.add_command(
+        "playdemo",
+        [this](const CommandArgs& a) {
+            if (a.argc() < 2) return print("usage: playdemo <demo>");
+            start_demo(a.argv(1), DemoMode::Playback);
+        },
+        "play a demo in recorded time");
+    c.add_command(
+        "timedemo",
+        [this](const CommandArgs& a) {
+            if (a.argc() < 2) return print("usage: timedemo <demo>");
+            start_demo(a.argv(1), DemoMode::TimeDemo);
+        },
+        "play a demo as fast as possible and report the frame rate");
+    c.add_command(
+        "stop", [this](const CommandArgs&) { end_demo(); }, "stop the demo being played");
+    c.add_command(
+        "demo_at",
+        [this](const CommandArgs& a) {
+            if (a.argc() < 3) return print("usage: demo_at <frame> \"<commands>\"");
+            demo_schedule_.emplace_back(std::strtoull(a.argv(1).c_str(), nullptr, 10),
+                                        a.value_from(2));
+        },
+        "run commands when the next demo reaches a frame (scripted swaps, screenshots)");
+    c.add_command(
+        "screenshot",
+        [this](const CommandArgs& a) { screenshot(a.argc() > 1 ? a.argv(1) : std::string()); },
+        "save the screen as PNG (screenshot [file.png])");
+    c.add_command(
+        "r_plugin",
+        [this](const CommandArgs& a) {
+            if (a.argc() < 2) {
+                return print("renderer: " + plugins_->active_name() +
+                             " (r_plugins lists the others)");
+            }
+            swap_plugin(a.argv(1));
+        },
+        "load a renderer plugin by name, replacing the current one");
+    c.add_command(
+        "r_plugins",
+        [this](const CommandArgs&) {
+            for (const auto& p : plugins_->available()) {
+                print((p.name == plugins_->active_name() ? "* " : "  ") + p.name + "  " + p.path);
+            }
+        },
+        "list renderer plugins");
+    c.add_command(
+        "showroom",
+        [this](const CommandArgs&) {
+            if (demo_->active()) end_demo();
+            show_showroom(true);
+        },
+        "show the built-in showroom scene");
+    c.add_command(
+        "path",
+        [this](const CommandArgs&) {
+            if (!vfs_) return print("no game data mounted");
+            for (const auto& p : vfs_->search_paths()) print(p.describe());
+        },
+        "show the search path");
+}
+
+void Engine::swap_plugin(const std::string& name) {
+    std::string why = dispatch_->load_plugin(name);
+    if (!why.empty()) {
+        print("r_plugin: " + why + "; keeping " + plugins_->active_name());
+        return;
+    }
+    host_.cvars().set(*cvars_.r_plugin, name);
+    print("renderer: " + plugins_->active_name());
+}
+
+void Engine::start_demo(const std::string& name, DemoMode mode) {
+    std::string why = demo_->start(name, mode);
+    if (!why.empty()) {
+        print(why);
+        return;
+    }
+    show_showroom(false);
+    // The rest of the command line ("+timedemo demo +quit") waits for the demo to end.
+    after_demo_text_ = host_.commands().take_pending_text();
+    frame_times_.clear();
+    gpu_timers_.reset();
+}
+
+void Engine::end_demo() {
+    if (!demo_->active()) return;
+    if (demo_->mode() == DemoMode::TimeDemo) report_timedemo();
+    demo_->stop();
+    demo_schedule_.clear();
+    if (!vfs_) show_showroom(true);
+    if (!after_demo_text_.empty()) {
+        host_.commands().insert_text(after_demo_text_);
+        after_demo_text_.clear();
+    }
+}
+
+void Engine::report_timedemo() {
+    FrameSummary s = frame_times_.summarize();
+    print(quake_timedemo_line(s));
+    print(format("frame time: median %.2f ms, 95th %.2f ms, 99th %.2f ms; 1%% low %.1f fps",
+                 s.median_ms, s.p95_ms, s.p99_ms, s.low1_fps));
+    gpu_timers_.finish();
+    BenchRecord record;
+    record.demo = demo_->name();
+    record.plugin = plugins_->active_name();
+    record.width = window_->drawable_width();
+    record.height = window_->drawable_height();
+    record.gl_renderer = window_->gl_info().renderer;
+    record.gl_version = window_->gl_info().version;
+    record.frames = s;
+    record.gpu_passes = gpu_timers_.totals();
+    record.gpu_timing = !record.gpu_passes.empty();
+    record.gpu_frames = gpu_timers_.frames_timed();
+    for (const auto& pass : record.gpu_passes) {
+        char line[128];
+        std::snprintf(line, sizeof line, "  gpu %-12s %8.3f ms/frame", pass.name.c_str(),
+                      pass.ms_per_frame);
+        print(line);
+    }
+    if (options_.bench_json) {
+        std::string error = append_bench_record(*options_.bench_json, record);
+        if (!error.empty()) print("benchjson: " + error);
+    }
+}
+
+void Engine::screenshot(const std::string& name) {
+    std::string path = name;
+    if (path.empty()) {
+        std::string dir = user_dir() + "/" + options_.game.value_or("id1");
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        auto next = next_screenshot_path(dir);
+        if (!next) return print("screenshot: " + next.error().message);
+        path = next.value();
+    }
+    std::string error =
+        save_screenshot(path, 0, window_->drawable_width(), window_->drawable_height());
+    print(error.empty() ? "wrote " + path : "screenshot: " + error);
+}
+
+}  // namespace nq

@@ -1,0 +1,33 @@
+// Which models the renderer holds: a demo's level or the showroom, never both.
+#include "app/engine.h"
+
+namespace nq {
+
+void Engine::register_level_models(Level& level) {
+    show_showroom(false);
+    scene_.bind_level(level);
+    for (const auto& model : level.models().models()) dispatch_->register_model(model->abi());
+    level_models_registered_ = true;
+    view_state_ = {};
+}
+
+void Engine::release_level_models() {
+    if (!level_models_registered_) return;
+    dispatch_->clear_models();
+    level_models_registered_ = false;
+}
+
+void Engine::show_showroom(bool on) {
+    if (on == (showroom_ != nullptr)) return;
+    if (on) {
+        release_level_models();
+        showroom_ = std::make_unique<Showroom>();
+        showroom_->assign_ids(1);
+        for (const nqr_model* m : showroom_->models()) dispatch_->register_model(m);
+    } else {
+        dispatch_->clear_models();
+        showroom_.reset();
+    }
+}
+
+}  // namespace nq

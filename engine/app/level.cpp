@@ -1,0 +1,79 @@
+#include "app/level.h"
+
+#include "client/model_info.h"
+#include "formats/entities.h"
+
+namespace nq {
+
+namespace {
+
+ModelInfo client_model_info(const RenderModel* model) {
+    if (!model) return brush_model_info();
+    if (model->alias_data()) return model_info_from_mdl(model->alias_data()->mdl());
+    if (model->sprite_data()) return model_info_from_spr(model->sprite_data()->spr());
+    return brush_model_info();
+}
+
+}  // namespace
+
+void Level::clear() {
+    culler_.reset();
+    lights_.reset();
+    ids_.clear();
+    world_ = nullptr;
+    cache_.clear();
+}
+
+Result<bool> Level::load(ClientState& client) {
+    clear();
+    auto names = client.model_names();
+    // Index 0 is unused; precache index 1 is the map.
+    if (names.size() < 2 || names[1].empty()) {
+        return Error{"serverinfo", 0, "the server named no world model"};
+    }
+    auto world = cache_.load_world(names[1]);
+    if (!world) return world.error();
+    world_ = cache_.get(world.value());
+    ids_.assign(names.size(), 0);
+    std::vector<ModelInfo> info(names.size());
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (names[i].empty()) continue;
+        ids_[i] = i == 1 ? world.value() : cache_.load(names[i]);
+        info[i] = client_model_info(cache_.get(ids_[i]));
+    }
+    client.set_model_info(std::move(info));
+
+    const BrushModelData* data = world_->brush_data();
+    culler_ = std::make_unique<WorldCuller>(data->bsp());
+    auto entities = parse_entities(data->bsp().entities, names[1], data->bsp().entities_offset);
+    std::vector<LightEntity> lights;
+    if (entities) {
+        lights = find_light_entities(entities.value(), warnings_);
+    } else {
+        warnings_.push_back(entities.error().to_string());
+    }
+    lights_ = std::make_unique<LightSampler>(data->bsp(), data->lighting_rgb(), std::move(lights));
+    return true;
+}
+
+nqr_model_id Level::model_id(int index) const {
+    return index >= 0 && static_cast<size_t>(index) < ids_.size() ? ids_[index] : 0;
+}
+
+uint32_t Level::model_kind(nqr_model_id id) const {
+    const RenderModel* m = cache_.get(id);
+    return m ? m->kind() : 0;
+}
+
+const Bsp* Level::world_bsp() const {
+    return world_ && world_->brush_data() ? &world_->brush_data()->bsp() : nullptr;
+}
+
+std::vector<std::string> Level::take_warnings() {
+    std::vector<std::string> out = std::move(warnings_);
+    warnings_.clear();
+    for (auto& w : cache_.take_warnings()) out.push_back(std::move(w));
+    return out;
+}
+
+}  // namespace nq

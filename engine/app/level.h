@@ -1,0 +1,45 @@
+// The loaded map and its models, bound to a demo's model precache list: what the client names
+// by precache index, the renderer knows by model id. Rebuilt when the client's generation
+// changes (a new svc_serverinfo).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "client/client_state.h"
+#include "render/light_sampler.h"
+#include "render/model_cache.h"
+#include "render/world_culler.h"
+
+namespace nq {
+
+class Level {
+public:
+    explicit Level(ModelCache::FileReader reader) : cache_(std::move(reader)) {}
+
+    // Loads the world (model_names()[1]) and every precached model; missing models become
+    // placeholders with a warning. Sets the client's model info. Fails only if the world does.
+    Result<bool> load(ClientState& client);
+    void clear();
+
+    bool loaded() const { return world_ != nullptr; }
+    const ModelCache& models() const { return cache_; }
+    // The id of precache index `index` (0 when none).
+    nqr_model_id model_id(int index) const;
+    uint32_t model_kind(nqr_model_id id) const;
+    const Bsp* world_bsp() const;
+    WorldCuller* culler() { return culler_.get(); }
+    const LightSampler* light_sampler() const { return lights_.get(); }
+    std::vector<std::string> take_warnings();
+
+private:
+    ModelCache cache_;
+    const RenderModel* world_ = nullptr;
+    std::vector<nqr_model_id> ids_;  // by precache index
+    std::unique_ptr<WorldCuller> culler_;
+    std::unique_ptr<LightSampler> lights_;
+    std::vector<std::string> warnings_;
+};
+
+}  // namespace nq

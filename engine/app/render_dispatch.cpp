@@ -1,0 +1,106 @@
+#include "app/render_dispatch.h"
+
+#include "classic/classic_renderer.h"
+#include "video/gpu_pass_timers.h"
+
+namespace nq {
+
+namespace {
+
+using Hook = void (*)(const nqr_frame*);
+using DefaultHook = void (npr::classic::ClassicRenderer::*)(const nqr_frame*);
+
+struct Pass {
+    GpuPass pass;
+    Hook nqr_renderer::*hook;
+    DefaultHook fallback;
+};
+
+constexpr Pass kPasses[] = {
+    {GpuPass::World, &nqr_renderer::draw_world, &npr::classic::ClassicRenderer::draw_world},
+    {GpuPass::Brush, &nqr_renderer::draw_brush_entities,
+     &npr::classic::ClassicRenderer::draw_brush_entities},
+    {GpuPass::Alias, &nqr_renderer::draw_alias_entities,
+     &npr::classic::ClassicRenderer::draw_alias_entities},
+    {GpuPass::Sprites, &nqr_renderer::draw_sprite_entities,
+     &npr::classic::ClassicRenderer::draw_sprite_entities},
+    {GpuPass::Particles, &nqr_renderer::draw_particles,
+     &npr::classic::ClassicRenderer::draw_particles},
+};
+
+}  // namespace
+
+RenderDispatch::RenderDispatch(PluginHost& plugins, GpuPassTimers* timers)
+    : plugins_(plugins), timers_(timers) {}
+
+RenderDispatch::~RenderDispatch() { unload(); }
+
+std::string RenderDispatch::load_plugin(const std::string& name) {
+    std::string why = plugins_.load(name);
+    if (why.empty()) sync_defaults();
+    return why;
+}
+
+void RenderDispatch::unload() {
+    plugins_.unload();
+    defaults_.reset();
+}
+
+bool RenderDispatch::plugin_draws_everything() const {
+    const nqr_renderer* r = plugins_.active();
+    if (!r) return false;
+    for (const Pass& p : kPasses) {
+        if (!(r->*p.hook)) return false;
+    }
+    return true;
+}
+
+void RenderDispatch::sync_defaults() {
+    if (plugin_draws_everything()) {
+        defaults_.reset();
+        return;
+    }
+    if (defaults_) return;
+    auto fresh = std::make_unique<npr::classic::ClassicRenderer>();
+    std::string error;
+    if (!fresh->init(&plugins_.engine_table(), &error)) {
+        plugins_.engine_table().log(NQR_LOG_ERROR,
+                                    ("default renderer failed: " + error).c_str());
+        return;
+    }
+    for (const nqr_model* m : plugins_.models()) fresh->register_model(m);
+    defaults_ = std::move(fresh);
+}
+
+void RenderDispatch::register_model(const nqr_model* model) {
+    plugins_.register_model(model);
+    if (defaults_) defaults_->register_model(model);
+}
+
+void RenderDispatch::release_model(nqr_model_id id) {
+    plugins_.release_model(id);
+    if (defaults_) defaults_->release_model(id);
+}
+
+void RenderDispatch::clear_models() {
+    while (!plugins_.models().empty()) release_model(plugins_.models().back()->id);
+}
+
+void RenderDispatch::draw(const nqr_frame& frame) {
+    const nqr_renderer* r = plugins_.active();
+    if (r && r->begin_frame) r->begin_frame(&frame);
+    for (const Pass& p : kPasses) {
+        Hook hook = r ? r->*p.hook : nullptr;
+        if (!hook && !defaults_) continue;
+        if (timers_) timers_->begin(p.pass);
+        if (hook) {
+            hook(&frame);
+        } else {
+            ((*defaults_).*p.fallback)(&frame);
+        }
+        if (timers_) timers_->end();
+    }
+    if (r && r->end_frame) r->end_frame(&frame);
+}
+
+}  // namespace nq

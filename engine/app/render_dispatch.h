@@ -1,0 +1,48 @@
+// Draws a frame through the active renderer plugin. Every hook the plugin leaves NULL is drawn
+// by the engine's own instance of nprlib's classic drawers, created when a plugin first needs it
+// and released when a plugin that draws everything itself takes over. Each pass is timed with
+// the GPU pass timers.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "nqr_renderer.h"
+#include "plugin/plugin_host.h"
+
+namespace nq::npr::classic {
+class ClassicRenderer;
+}
+
+namespace nq {
+
+class GpuPassTimers;
+
+class RenderDispatch {
+public:
+    RenderDispatch(PluginHost& plugins, GpuPassTimers* timers);
+    ~RenderDispatch();
+
+    // Swaps to `name` (see PluginHost::load), then makes the defaults match the new plugin.
+    std::string load_plugin(const std::string& name);
+    void unload();
+
+    // Models go to the plugin and to the defaults (when they exist).
+    void register_model(const nqr_model* model);
+    void release_model(nqr_model_id id);
+    void clear_models();
+
+    void draw(const nqr_frame& frame);
+
+    bool defaults_active() const { return defaults_ != nullptr; }
+
+private:
+    bool plugin_draws_everything() const;
+    void sync_defaults();
+
+    PluginHost& plugins_;
+    GpuPassTimers* timers_;
+    std::unique_ptr<npr::classic::ClassicRenderer> defaults_;
+};
+
+}  // namespace nq

@@ -1,0 +1,167 @@
+#include "app/scene_builder.h"
+
+#include <algorithm>
+
+#include "client/nqr_export.h"
+#include "render/frustum.h"
+
+namespace nq {
+
+namespace {
+
+glm::vec3 to_glm(const Vec3& v) { return {v[0], v[1], v[2]}; }
+
+// Quake keeps the weapon and the player bright enough to be seen in the dark.
+float minimum_light(const VisibleEntity& v, int view_entity) {
+    if (v.flags & kVisibleViewModel) return kViewModelMinimumLight;
+    if (static_cast<int>(v.number) == view_entity) return kPlayerMinimumLight;
+    return 0.0f;
+}
+
+}  // namespace
+
+SceneBuilder::SceneBuilder()
+    : entities_(kMaxEntities), particles_(kMaxParticles), dlights_(kMaxDlights),
+      visible_(kMaxEntities), smoothed_(kSmootherSlots) {
+    for (auto& list : by_kind_) list.reserve(kMaxEntities);
+    frame_.size = sizeof(nqr_frame);
+    lightstyles_.fill(1.0f);
+}
+
+void SceneBuilder::bind_level(Level& level) {
+    size_t n = level.culler() ? level.culler()->max_visible_surfaces() : 0;
+    visible_surfaces_.assign(std::max<size_t>(n, 1), 0);
+    for (auto& s : smoothed_) s = SmoothedLight{};
+}
+
+void SceneBuilder::reset_lists() {
+    entity_count_ = 0;
+    for (auto& list : by_kind_) list.clear();
+    counts_ = {};
+}
+
+void SceneBuilder::link_lists() {
+    frame_.brush_entities = by_kind_[NQR_MODEL_BRUSH].data();
+    frame_.num_brush_entities = static_cast<uint32_t>(by_kind_[NQR_MODEL_BRUSH].size());
+    frame_.alias_entities = by_kind_[NQR_MODEL_ALIAS].data();
+    frame_.num_alias_entities = static_cast<uint32_t>(by_kind_[NQR_MODEL_ALIAS].size());
+    frame_.sprite_entities = by_kind_[NQR_MODEL_SPRITE].data();
+    frame_.num_sprite_entities = static_cast<uint32_t>(by_kind_[NQR_MODEL_SPRITE].size());
+    frame_.lightstyles = lightstyles_.data();
+}
+
+const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
+                                     const ViewResult& view, const CameraSetup& camera,
+                                     double real_time, float frame_time) {
+    reset_lists();
+    ++frame_.number;
+    frame_.time = client.time();
+    frame_.real_time = real_time;
+    frame_.frame_time = frame_time;
+    frame_.flags = (view.underwater ? NQR_FRAME_UNDERWATER : 0u) |
+                   (view.intermission ? NQR_FRAME_INTERMISSION : 0u);
+    fill_camera(camera, frame_.camera);
+
+    auto styles = client.light_style_values();
+    std::copy(styles.begin(), styles.end(), lightstyles_.begin());
+
+    frame_.num_dlights = static_cast<uint32_t>(
+        export_dynamic_lights(client.dynamic_lights(), client.time(), dlights_));
+    frame_.dlights = dlights_.data();
+    frame_.num_particles = static_cast<uint32_t>(
+        export_particles(client.particles().particles(), particles_));
+    frame_.particles = particles_.data();
+
+    frame_.world = level.model_id(1);
+    frame_.num_visible_surfaces = 0;
+    frame_.visible_surfaces = visible_surfaces_.data();
+    if (WorldCuller* culler = level.culler()) {
+        Frustum frustum =
+            Frustum::sides_from_view_projection(load_matrix(frame_.camera.view_projection));
+        frame_.num_visible_surfaces =
+            culler->cull(to_glm(view.origin), frustum, visible_surfaces_);
+    }
+
+    light_dt_ = static_cast<float>(client.time() - client.old_time());
+    collect_visible_entities(client, view, visible_);
+    for (const VisibleEntity& v : visible_.entities()) add_entity(level, client, v);
+    link_lists();
+    return frame_;
+}
+
+void SceneBuilder::add_entity(Level& level, const ClientState& client, const VisibleEntity& v) {
+    ++counts_.entities_considered;
+    nqr_model_id id = level.model_id(v.model);
+    uint32_t kind = level.model_kind(id);
+    if (id == 0 || kind == 0 || kind > NQR_MODEL_SPRITE) {
+        ++counts_.entities_without_model;
+        return;
+    }
+    const RenderModel* model = level.models().get(id);
+    if (!(v.flags & kVisibleViewModel) && level.culler()) {
+        // Conservative box: the model's bounds around its origin, rotation-proof by radius.
+        float r = std::max(model->abi()->radius, 1.0f);
+        glm::vec3 o = to_glm(v.origin);
+        if (!level.culler()->box_potentially_visible(o - r, o + r)) {
+            ++counts_.entities_culled;
+            return;
+        }
+    }
+    if (entity_count_ == entities_.size()) return;
+    nqr_entity& e = entities_[entity_count_++];
+    export_entity(v, id, e);
+    fill_entity_transform(kind, frame_.camera, e);
+    if (const LightSampler* sampler = level.light_sampler()) {
+        EntityLightQuery query;
+        query.origin = to_glm(v.origin);
+        query.minimum_level = minimum_light(v, client.view_entity());
+        query.fullbright = (v.flags & kVisibleFullbright) != 0;
+        sampler->sample(query, lightstyles_, DlightList{dlights_.data(), frame_.num_dlights},
+                        e.light);
+        // Smoothed per entity so its light never snaps (e.g. crossing a shadow edge).
+        SmoothedLight& slot = smoothed_[v.number % smoothed_.size()];
+        if (slot.model != id) {
+            slot.smoother.reset();
+            slot.model = id;
+        }
+        slot.smoother.update(e.light, light_dt_, e.light);
+    }
+    by_kind_[kind].push_back(&e);
+}
+
+nqr_frame& SceneBuilder::begin_custom(const CameraSetup& camera, double time, double real_time,
+                                      float frame_time) {
+    reset_lists();
+    ++frame_.number;
+    frame_.time = time;
+    frame_.real_time = real_time;
+    frame_.frame_time = frame_time;
+    frame_.flags = 0;
+    fill_camera(camera, frame_.camera);
+    lightstyles_.fill(1.0f);
+    frame_.world = 0;
+    frame_.num_visible_surfaces = 0;
+    frame_.visible_surfaces = visible_surfaces_.empty() ? nullptr : visible_surfaces_.data();
+    frame_.num_dlights = 0;
+    frame_.dlights = dlights_.data();
+    frame_.num_particles = 0;
+    frame_.particles = particles_.data();
+    return frame_;
+}
+
+nqr_entity& SceneBuilder::add_custom_entity(uint32_t kind) {
+    nqr_entity& e = entities_[std::min(entity_count_, entities_.size() - 1)];
+    if (entity_count_ < entities_.size()) ++entity_count_;
+    e = nqr_entity{};
+    e.size = sizeof(nqr_entity);
+    e.light.size = sizeof(nqr_entity_light);
+    if (kind >= 1 && kind <= NQR_MODEL_SPRITE) by_kind_[kind].push_back(&e);
+    return e;
+}
+
+const nqr_frame& SceneBuilder::finish_custom() {
+    link_lists();
+    return frame_;
+}
+
+}  // namespace nq

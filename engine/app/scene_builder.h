@@ -1,0 +1,75 @@
+// Assembles the nqr_frame a renderer plugin draws: the camera, the world surfaces that survive
+// PVS and frustum culling, light styles, and every visible entity with its model matrix, eye in
+// model space and lighting, sorted by model kind. All storage is reserved once; building a
+// frame does not allocate.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "app/level.h"
+#include "client/client_state.h"
+#include "client/view.h"
+#include "client/visible_entities.h"
+#include "nqr_renderer.h"
+#include "render/light_smoother.h"
+#include "render/view_transform.h"
+
+namespace nq {
+
+struct SceneCounts {
+    uint32_t entities_considered = 0;
+    uint32_t entities_culled = 0;
+    uint32_t entities_without_model = 0;
+};
+
+class SceneBuilder {
+public:
+    static constexpr size_t kMaxEntities = 4096;
+    static constexpr size_t kMaxParticles = 16384;
+    static constexpr size_t kMaxDlights = 64;
+    // Light smoothing state per entity number (numbers beyond it share slots modulo the size).
+    static constexpr size_t kSmootherSlots = 8192;
+
+    SceneBuilder();
+
+    // Sizes the visible-surface list for the level's world (call after Level::load).
+    void bind_level(Level& level);
+
+    // Builds the frame for the client's current state.
+    const nqr_frame& build(Level& level, const ClientState& client, const ViewResult& view,
+                           const CameraSetup& camera, double real_time, float frame_time);
+
+    // A frame from entities the caller provides (the showroom): no world, no culling.
+    nqr_frame& begin_custom(const CameraSetup& camera, double time, double real_time,
+                            float frame_time);
+    nqr_entity& add_custom_entity(uint32_t kind);  // appended and listed under its kind
+    const nqr_frame& finish_custom();
+
+    const SceneCounts& counts() const { return counts_; }
+    VisibleEntityList& visible_entities() { return visible_; }
+
+private:
+    void reset_lists();
+    void add_entity(Level& level, const ClientState& client, const VisibleEntity& v);
+    void link_lists();
+
+    nqr_frame frame_{};
+    std::vector<uint32_t> visible_surfaces_;
+    std::array<float, 64> lightstyles_{};
+    std::vector<nqr_entity> entities_;
+    size_t entity_count_ = 0;
+    std::array<std::vector<const nqr_entity*>, 4> by_kind_;  // index: nqr_model_kind
+    std::vector<nqr_particle> particles_;
+    std::vector<nqr_dlight> dlights_;
+    VisibleEntityList visible_;
+    struct SmoothedLight {
+        LightSmoother smoother;
+        nqr_model_id model = 0;
+    };
+    std::vector<SmoothedLight> smoothed_;
+    float light_dt_ = 0;
+    SceneCounts counts_;
+};
+
+}  // namespace nq

@@ -1,0 +1,221 @@
+#include "classic/alias_drawer.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "classic/abi_access.h"
+#include "gl/texture_upload.h"
+
+namespace nq::npr::classic {
+namespace {
+
+constexpr char kVertex[] = R"(#version 330 core
+layout(location = 0) in uint a_pose_vertex;
+layout(location = 1) in vec2 a_uv;
+uniform usamplerBuffer u_poses;
+uniform int u_num_vertices;
+uniform int u_pose0;
+uniform int u_pose1;
+uniform float u_lerp;
+uniform vec3 u_scale;
+uniform vec3 u_origin;
+uniform mat4 u_model;
+uniform mat4 u_view_projection;
+uniform mat3 u_normal_to_view;
+uniform vec3 u_light_direction;
+uniform float u_ambient;
+uniform float u_directional;
+uniform vec3 u_light_color;
+out vec2 v_uv;
+out vec3 v_shade;
+out vec3 v_normal;
+int texel_of(int pose) { return (pose * u_num_vertices + int(a_pose_vertex)) * 2; }
+vec3 unpack_normal(uvec4 texel) { return (vec3(texel.xyz) - 127.5) / 127.5; }
+void main() {
+    uvec4 p0 = texelFetch(u_poses, texel_of(u_pose0));
+    uvec4 p1 = texelFetch(u_poses, texel_of(u_pose1));
+    vec3 packed_position = mix(vec3(p0.xyz), vec3(p1.xyz), u_lerp);
+    vec3 n0 = unpack_normal(texelFetch(u_poses, texel_of(u_pose0) + 1));
+    vec3 n1 = unpack_normal(texelFetch(u_poses, texel_of(u_pose1) + 1));
+    vec3 normal = mix(n0, n1, u_lerp);
+    vec4 world = u_model * vec4(u_scale * packed_position + u_origin, 1.0);
+    gl_Position = u_view_projection * world;
+    vec3 world_normal = mat3(u_model) * normal;
+    float len = length(world_normal);
+    world_normal = len > 1e-6 ? world_normal / len : vec3(0.0, 0.0, 1.0);
+    float shade = u_ambient + u_directional * max(dot(world_normal, u_light_direction), 0.0);
+    v_shade = shade * u_light_color;
+    v_uv = a_uv;
+    v_normal = u_normal_to_view * normal;
+}
+)";
+
+constexpr char kFragment[] = R"(#version 330 core
+in vec2 v_uv;
+in vec3 v_shade;
+in vec3 v_normal;
+uniform sampler2D u_skin;
+uniform sampler2D u_fullbright;
+uniform float u_alpha;
+uniform float u_alpha_cutoff;
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out vec4 o_normal;
+void main() {
+    vec4 base = texture(u_skin, v_uv);
+    if (base.a < u_alpha_cutoff) discard;
+    vec3 color = base.rgb * v_shade + texture(u_fullbright, v_uv).rgb;
+    o_color = vec4(color, u_alpha);
+    vec3 n = length(v_normal) > 1e-6 ? normalize(v_normal) : vec3(0.0, 0.0, 1.0);
+    o_normal = vec4(n * 0.5 + 0.5, 1.0);
+}
+)";
+
+constexpr int kUnitSkin = 0;
+constexpr int kUnitFullbright = 1;
+constexpr int kUnitPoses = 2;
+constexpr float kHoleyAlphaCutoff = 0.666f;
+
+bool is_view_model(const nqr_entity& entity) {
+    return (entity.flags & NQR_ENTITY_VIEWMODEL) != 0;
+}
+
+bool in_pass(const nqr_entity& entity, int pass_index) {
+    const bool translucent = entity_alpha(entity.alpha) < 1.0f;
+    switch (pass_index) {
+        case 0:
+            return !is_view_model(entity) && !translucent;
+        case 1:
+            return !is_view_model(entity) && translucent;
+        default:
+            return is_view_model(entity);
+    }
+}
+
+}  // namespace
+
+bool AliasDrawer::init(gl::ObjectTracker* tracker, const uint8_t* palette_rgb, std::string& error) {
+    gl::ProgramBuild build = gl::Program::build({"classic alias", kVertex, kFragment}, tracker);
+    if (!build.ok()) {
+        error = build.error;
+        return false;
+    }
+    program_ = std::move(build.program);
+    gl::bind_sampler_units(program_, {"u_skin", "u_fullbright", "u_poses"});
+    black_ = gl::create_solid_texture(tracker, 0, 0, 0, 0);
+    translated_.init(tracker, palette_rgb);
+    return true;
+}
+
+void AliasDrawer::reset() {
+    translated_.reset();
+    program_.reset();
+    black_.reset();
+}
+
+void AliasDrawer::set_lighting(const nqr_entity& entity) {
+    float ambient = 1.0f, directional = 0.0f;
+    glm::vec3 direction(0.0f, 0.0f, 1.0f), colour(1.0f);
+    const nqr_entity_light& light = entity.light;
+    if (!(entity.flags & NQR_ENTITY_FULLBRIGHT) && light.size >= sizeof(nqr_entity_light)) {
+        ambient = light.ambient;
+        directional = light.directional;
+        direction = glm::make_vec3(light.direction);
+        colour = glm::make_vec3(light.color);
+        if (is_view_model(entity)) ambient = std::max(ambient, settings.view_model_min_ambient);
+    }
+    glUniform1f(program_.location("u_ambient"), ambient);
+    glUniform1f(program_.location("u_directional"), directional);
+    glUniform3fv(program_.location("u_light_direction"), 1, glm::value_ptr(direction));
+    glUniform3fv(program_.location("u_light_color"), 1, glm::value_ptr(colour));
+}
+
+GLuint AliasDrawer::skin_texture(const nqr_frame& frame, const nqr_entity& entity,
+                                 const AliasModelGpu& model, const SkinImageGpu& image) {
+    if (entity.has_translation) {
+        const GLuint translated =
+            translated_.get(entity.model, model, entity.skin, entity.skin_image, entity.top_color,
+                            entity.bottom_color, frame.number);
+        if (translated != 0) return translated;
+    }
+    return image.base.id();
+}
+
+void AliasDrawer::draw_entity(const nqr_frame& frame, const FrameView& view,
+                              const nqr_entity& entity, const AliasModelGpu& model) {
+    const SkinImageGpu* image = model.skin_image(entity.skin, entity.skin_image);
+    if (!image) return;
+    const nqr_alias_model& source = model.model();
+    const uint32_t last_pose = source.num_poses - 1;
+    program_.use();
+    glUniformMatrix4fv(program_.location("u_view_projection"), 1, GL_FALSE,
+                       glm::value_ptr(view.view_projection));
+    glUniform1i(program_.location("u_num_vertices"), static_cast<GLint>(source.num_vertices));
+    glUniform1i(program_.location("u_pose0"),
+                static_cast<GLint>(std::min(entity.pose0, last_pose)));
+    glUniform1i(program_.location("u_pose1"),
+                static_cast<GLint>(std::min(entity.pose1, last_pose)));
+    glUniform1f(program_.location("u_lerp"), std::clamp(entity.lerp, 0.0f, 1.0f));
+    glUniform3fv(program_.location("u_scale"), 1, source.scale);
+    glUniform3fv(program_.location("u_origin"), 1, source.origin);
+    const glm::mat4 model_matrix = mat4_from(entity.model_matrix);
+    glUniformMatrix4fv(program_.location("u_model"), 1, GL_FALSE, entity.model_matrix);
+    const glm::mat3 normals = normal_to_view(view, model_matrix);
+    glUniformMatrix3fv(program_.location("u_normal_to_view"), 1, GL_FALSE, glm::value_ptr(normals));
+    set_lighting(entity);
+    glUniform1f(program_.location("u_alpha"), entity_alpha(entity.alpha));
+    glUniform1f(program_.location("u_alpha_cutoff"), model.holey() ? kHoleyAlphaCutoff : 0.0f);
+
+    glActiveTexture(GL_TEXTURE0 + kUnitSkin);
+    glBindTexture(GL_TEXTURE_2D, skin_texture(frame, entity, model, *image));
+    glActiveTexture(GL_TEXTURE0 + kUnitFullbright);
+    glBindTexture(GL_TEXTURE_2D, image->fullbright ? image->fullbright.id() : black_.id());
+    glActiveTexture(GL_TEXTURE0 + kUnitPoses);
+    glBindTexture(GL_TEXTURE_BUFFER, model.pose_texture());
+    glBindVertexArray(model.vertex_array());
+    // Quake winds alias triangles clockwise seen from outside: cull the inside (as GLQuake did),
+    // which also keeps a translucent model from blending its far side in.
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CW);
+    glCullFace(GL_BACK);
+    const bool translucent = entity_alpha(entity.alpha) < 1.0f;
+    if (translucent) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+    }
+    glDrawElements(GL_TRIANGLES, model.index_count(), GL_UNSIGNED_INT, nullptr);
+    if (translucent) {
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+    }
+    glFrontFace(GL_CCW);
+    glDisable(GL_CULL_FACE);
+}
+
+void AliasDrawer::draw_pass(const nqr_frame& frame, const FrameView& view,
+                            const ModelRegistry& models, Pass pass) {
+    const int pass_index = static_cast<int>(pass);
+    for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
+        const nqr_entity* entity = frame.alias_entities[i];
+        if (!has_known_prefix(entity) || !in_pass(*entity, pass_index)) continue;
+        const RegisteredModel* model = models.find(entity->model);
+        if (!model || !model->alias) continue;
+        draw_entity(frame, view, *entity, *model->alias);
+    }
+}
+
+void AliasDrawer::draw_alias_entities(const nqr_frame& frame, const ModelRegistry& models) {
+    FrameView view;
+    if (!read_frame_view(&frame, view) || !frame.alias_entities || !program_) return;
+    begin_classic_pass();
+    draw_pass(frame, view, models, Pass::opaque);
+    draw_pass(frame, view, models, Pass::translucent);
+    glDepthRange(0.0, settings.view_model_depth_max);
+    draw_pass(frame, view, models, Pass::view_model);
+    end_classic_pass();
+}
+
+}  // namespace nq::npr::classic

@@ -1,0 +1,103 @@
+#include "classic/brush_textures.h"
+
+#include <span>
+
+#include "classic/abi_access.h"
+#include "gl/texture_upload.h"
+
+namespace nq::npr::classic {
+namespace {
+
+// A grey/black checkerboard for textures the map did not carry.
+BrushTextureGpu placeholder_texture(gl::ObjectTracker* tracker) {
+    constexpr int kSize = 16;
+    std::vector<uint8_t> rgba(kSize * kSize * 4);
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const uint8_t value = ((x / 8) ^ (y / 8)) ? 96 : 0;
+            uint8_t* texel = &rgba[(y * kSize + x) * 4];
+            texel[0] = texel[1] = texel[2] = value;
+            texel[3] = 255;
+        }
+    }
+    BrushTextureGpu texture;
+    texture.base = gl::create_rgba8_texture(tracker, kSize, kSize, rgba, gl::kMipmappedRepeat);
+    texture.size[0] = texture.size[1] = kSize;
+    return texture;
+}
+
+// The w x h sub-image at column x0 of a palette image `stride` texels wide.
+void copy_columns(const uint8_t* pixels, uint32_t stride, uint32_t x0, uint32_t width,
+                  uint32_t height, std::vector<uint8_t>& out) {
+    out.resize(static_cast<size_t>(width) * height);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x) out[y * width + x] = pixels[y * stride + x0 + x];
+    }
+}
+
+void create_sky_layers(gl::ObjectTracker* tracker, const nqr_texture& source,
+                       const uint8_t* palette, BrushTextureGpu& out) {
+    const uint32_t half = source.width / 2;
+    std::vector<uint8_t> layer, scratch;
+    copy_columns(source.mips[0], source.width, half, half, source.height, layer);
+    out.base =
+        gl::create_palette_texture(tracker, static_cast<int>(half), static_cast<int>(source.height),
+                                   layer, palette, {}, gl::kMipmappedRepeat, scratch);
+    copy_columns(source.mips[0], source.width, 0, half, source.height, layer);
+    out.sky_front = gl::create_palette_texture(
+        tracker, static_cast<int>(half), static_cast<int>(source.height), layer, palette,
+        {.transparent = gl::Transparent::index0}, gl::kMipmappedRepeat, scratch);
+    out.size[0] = static_cast<float>(half);
+    out.size[1] = static_cast<float>(source.height);
+}
+
+BrushTextureGpu create_one(gl::ObjectTracker* tracker, const nqr_texture& source,
+                           const uint8_t* palette) {
+    const bool has_pixels = source.mips[0] != nullptr && source.width > 0 && source.height > 0;
+    if (!has_pixels) return placeholder_texture(tracker);
+    BrushTextureGpu out;
+    out.kind = surface_kind_of(source);
+    if (out.kind == SurfaceKind::sky && source.width >= 2) {
+        create_sky_layers(tracker, source, palette, out);
+        return out;
+    }
+    const int width = static_cast<int>(source.width);
+    const int height = static_cast<int>(source.height);
+    std::span<const uint8_t> pixels(source.mips[0], static_cast<size_t>(width) * height);
+    std::vector<uint8_t> scratch;
+    gl::PaletteExpansion expansion;
+    expansion.blacken_fullbrights = out.kind != SurfaceKind::liquid;
+    if (out.kind == SurfaceKind::fence) expansion.transparent = gl::Transparent::index255;
+    out.base = gl::create_palette_texture(tracker, width, height, pixels, palette, expansion,
+                                          gl::kMipmappedRepeat, scratch);
+    if (out.kind != SurfaceKind::liquid) {
+        out.fullbright = gl::create_fullbright_texture(tracker, width, height, pixels, palette,
+                                                       gl::kMipmappedRepeat, scratch);
+    }
+    out.size[0] = static_cast<float>(width);
+    out.size[1] = static_cast<float>(height);
+    return out;
+}
+
+}  // namespace
+
+SurfaceKind surface_kind_of(const nqr_texture& texture) {
+    if (texture.flags & NQR_TEXTURE_SKY) return SurfaceKind::sky;
+    if (texture.flags & NQR_TEXTURE_LIQUID) return SurfaceKind::liquid;
+    if (texture.name != nullptr && texture.name[0] == '{') return SurfaceKind::fence;
+    return SurfaceKind::lit;
+}
+
+std::vector<BrushTextureGpu> create_brush_textures(gl::ObjectTracker* tracker,
+                                                   const nqr_brush_model& brush,
+                                                   const uint8_t* palette_rgb) {
+    std::vector<BrushTextureGpu> textures;
+    textures.reserve(brush.num_textures + 1);
+    for (uint32_t i = 0; i < brush.num_textures; ++i) {
+        textures.push_back(create_one(tracker, abi_element(brush.textures, i), palette_rgb));
+    }
+    textures.push_back(placeholder_texture(tracker));
+    return textures;
+}
+
+}  // namespace nq::npr::classic

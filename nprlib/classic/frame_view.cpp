@@ -1,0 +1,55 @@
+#include "classic/frame_view.h"
+
+#include <epoxy/gl.h>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "classic/abi_access.h"
+
+namespace nq::npr::classic {
+
+glm::mat4 mat4_from(const float* column_major) {
+    return glm::make_mat4(column_major);
+}
+
+bool read_frame_view(const nqr_frame* frame, FrameView& out) {
+    if (!has_known_prefix(frame) || !has_known_prefix(&frame->camera)) return false;
+    const nqr_camera& camera = frame->camera;
+    out.view_projection = mat4_from(camera.view_projection);
+    out.view = mat4_from(camera.view);
+    out.eye = glm::make_vec3(camera.origin);
+    out.forward = glm::make_vec3(camera.forward);
+    out.right = glm::make_vec3(camera.right);
+    out.up = glm::make_vec3(camera.up);
+    return true;
+}
+
+glm::mat3 normal_to_view(const FrameView& view, const glm::mat4& model) {
+    return glm::inverseTranspose(glm::mat3(view.view * model));
+}
+
+void begin_classic_pass() {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    glDepthRange(0.0, 1.0);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+}
+
+void end_classic_pass() {
+    glDepthMask(GL_TRUE);
+    glDepthRange(0.0, 1.0);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+float entity_alpha(float alpha) {
+    return (alpha <= 0.0f || alpha >= 1.0f) ? 1.0f : alpha;
+}
+
+}  // namespace nq::npr::classic

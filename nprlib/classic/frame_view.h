@@ -1,0 +1,35 @@
+// What every classic drawer reads from a frame's camera, as glm values, and the GL state the
+// classic hooks start from and leave behind: depth test on (GL_LEQUAL), depth writes on, no
+// blending, no face culling, depth range 0..1, vertex array 0, program 0.
+#pragma once
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "nqr_renderer.h"
+
+namespace nq::npr::classic {
+
+struct FrameView {
+    glm::mat4 view_projection{1.0f};
+    glm::mat4 view{1.0f};
+    glm::vec3 eye{0.0f}, forward{1, 0, 0}, right{0, -1, 0}, up{0, 0, 1};
+};
+
+// False when the frame (or its camera) is older than the ABI prefix this nprlib reads.
+bool read_frame_view(const nqr_frame* frame, FrameView& out);
+
+glm::mat4 mat4_from(const float* column_major);
+
+// Normals from model space to view space.
+glm::mat3 normal_to_view(const FrameView& view, const glm::mat4& model);
+
+void begin_classic_pass();
+void end_classic_pass();
+
+// Entity alpha as drawn: ABI 1 = opaque; values <= 0 or >= 1 are treated as opaque (0 is what an
+// unset alpha looks like in the protocol extensions that carry one).
+float entity_alpha(float alpha);
+
+}  // namespace nq::npr::classic

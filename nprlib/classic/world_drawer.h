@@ -1,0 +1,64 @@
+// Draws brush surfaces the GLQuake way: the world's visible surfaces and brush entities, batched
+// by texture (animated by time, alternate chains for entities with frame != 0), lightmapped with
+// per-frame light styles and dynamic lights, fullbright pixels unlit, a two-layer scrolling sky
+// and warped, unlit liquids; back faces culled. Order within one call: lit and fence surfaces, sky,
+// then liquids (blended afterwards when water_alpha < 1).
+#pragma once
+
+#include <array>
+#include <span>
+#include <string>
+
+#include <glm/mat4x4.hpp>
+
+#include "classic/brush_model_gpu.h"
+#include "classic/brush_programs.h"
+#include "classic/frame_view.h"
+#include "classic/lightmap_builder.h"
+#include "classic/model_registry.h"
+#include "nqr_renderer.h"
+
+namespace nq::npr::classic {
+
+inline constexpr size_t kMaxDynamicLights = 64;  // more in a frame are ignored
+
+struct BrushSettings {
+    // QuakeSpasm's gl_overbright 1 (its default): lightmaps hold half the light and are doubled
+    // when drawn, so surfaces can be lit up to 2x their texture colour. 1 = GLQuake's clamp at 1.
+    float overbright = 2.0f;
+    float water_alpha = 1.0f;  // r_wateralpha (default 1: opaque)
+};
+
+class WorldDrawer {
+  public:
+    bool init(gl::ObjectTracker* tracker, std::string& error);
+    void reset();
+
+    // frame->visible_surfaces of the world model (all of its surfaces when the list is NULL).
+    void draw_world(const nqr_frame& frame, const ModelRegistry& models);
+    void draw_brush_entities(const nqr_frame& frame, const ModelRegistry& models);
+
+    // One selection of a brush model placed by `model_matrix`; frame dynamic lights are moved
+    // into model space with the matrix's inverse.
+    void draw_selection(const nqr_frame& frame, const FrameView& view, BrushModelGpu& model,
+                        SurfaceSelection selection, const glm::mat4& model_matrix,
+                        bool alternate_animation, float alpha);
+
+    BrushSettings settings;
+
+  private:
+    std::span<const DynamicLight> gather_lights(const nqr_frame& frame,
+                                                const glm::mat4& model_matrix);
+    void draw_batches(const nqr_frame& frame, const FrameView& view, BrushModelGpu& model,
+                      const SurfaceBatches& batches, const glm::mat4& model_matrix, float alpha);
+    void draw_kind(BrushModelGpu& model, const SurfaceBatches& batches, SurfaceKind kind,
+                   gl::Program& program);
+    void set_common_uniforms(gl::Program& program, const FrameView& view,
+                             const glm::mat4& model_matrix);
+
+    BrushPrograms programs_;
+    gl::Texture black_;  // bound where a texture has no fullbright pixel
+    std::array<DynamicLight, kMaxDynamicLights> lights_{};
+};
+
+}  // namespace nq::npr::classic

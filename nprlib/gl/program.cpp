@@ -1,0 +1,102 @@
+#include "gl/program.h"
+
+#include <cstring>
+
+namespace nq::npr::gl {
+namespace {
+
+std::string trimmed(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ' || text.back() == '\0')) {
+        text.pop_back();
+    }
+    return text;
+}
+
+const char* stage_name(GLenum stage) {
+    return stage == GL_VERTEX_SHADER ? "vertex" : stage == GL_FRAGMENT_SHADER ? "fragment" : "?";
+}
+
+// Compiles one stage; returns an empty handle and fills `error` on failure.
+Shader compile_stage(GLenum stage, const char* text, const char* program_name,
+                     ObjectTracker* tracker, std::string& error) {
+    Shader shader = Shader::adopt(glCreateShader(stage), tracker);
+    if (!shader) {
+        error = std::string(program_name) + ": glCreateShader failed";
+        return {};
+    }
+    glShaderSource(shader.id(), 1, &text, nullptr);
+    glCompileShader(shader.id());
+    GLint compiled = GL_FALSE;
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &compiled);
+    if (compiled != GL_TRUE) {
+        error = std::string(program_name) + ": " + stage_name(stage) +
+                " shader failed to compile:\n" + shader_info_log(shader.id());
+        return {};
+    }
+    return shader;
+}
+
+}  // namespace
+
+std::string shader_info_log(GLuint shader) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 0 ? length : 0), '\0');
+    if (length > 0) glGetShaderInfoLog(shader, length, nullptr, log.data());
+    return trimmed(std::move(log));
+}
+
+std::string program_info_log(GLuint program) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 0 ? length : 0), '\0');
+    if (length > 0) glGetProgramInfoLog(program, length, nullptr, log.data());
+    return trimmed(std::move(log));
+}
+
+ProgramBuild Program::build(const ProgramSource& source, ObjectTracker* tracker) {
+    ProgramBuild result;
+    const char* name = source.name ? source.name : "program";
+    Shader vertex = compile_stage(GL_VERTEX_SHADER, source.vertex, name, tracker, result.error);
+    if (!vertex) return result;
+    Shader fragment =
+        compile_stage(GL_FRAGMENT_SHADER, source.fragment, name, tracker, result.error);
+    if (!fragment) return result;
+
+    ProgramName program = ProgramName::create(tracker);
+    glAttachShader(program.id(), vertex.id());
+    glAttachShader(program.id(), fragment.id());
+    glLinkProgram(program.id());
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+    // The shaders are flagged for deletion with the program once detached.
+    glDetachShader(program.id(), vertex.id());
+    glDetachShader(program.id(), fragment.id());
+    if (linked != GL_TRUE) {
+        result.error =
+            std::string(name) + ": program failed to link:\n" + program_info_log(program.id());
+        return result;
+    }
+    result.program.name_ = std::move(program);
+    return result;
+}
+
+GLint Program::location(const char* uniform_name) {
+    for (const CachedLocation& cached : cache_) {
+        if (std::strcmp(cached.name.c_str(), uniform_name) == 0) return cached.location;
+    }
+    GLint location = glGetUniformLocation(name_.id(), uniform_name);
+    cache_.push_back({uniform_name, location});
+    return location;
+}
+
+void bind_sampler_units(Program& program, std::initializer_list<const char*> samplers) {
+    program.use();
+    GLint unit = 0;
+    for (const char* sampler : samplers) {
+        glUniform1i(program.location(sampler), unit);
+        ++unit;
+    }
+}
+
+}  // namespace nq::npr::gl

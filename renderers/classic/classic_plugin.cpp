@@ -1,0 +1,62 @@
+// The `classic` renderer plugin: the faithful GLQuake look, drawn entirely by nprlib's classic
+// drawers. It implements every hook itself, so the engine's defaults stay idle while it runs.
+#include <memory>
+#include <string>
+
+#include "classic/classic_renderer.h"
+#include "nqr_renderer.h"
+
+namespace {
+
+using nq::npr::classic::ClassicRenderer;
+
+// The plugin's only state; created in init, destroyed in shutdown.
+std::unique_ptr<ClassicRenderer> g_renderer;
+
+int classic_init(const nqr_engine* engine) {
+    auto renderer = std::make_unique<ClassicRenderer>();
+    std::string error;
+    if (!renderer->init(engine, &error)) return 1;  // init() logged why
+    g_renderer = std::move(renderer);
+    return 0;
+}
+
+void classic_shutdown() { g_renderer.reset(); }
+void classic_register(const nqr_model* m) { g_renderer->register_model(m); }
+void classic_release(nqr_model_id id) { g_renderer->release_model(id); }
+void classic_world(const nqr_frame* f) { g_renderer->draw_world(f); }
+void classic_brush(const nqr_frame* f) { g_renderer->draw_brush_entities(f); }
+void classic_alias(const nqr_frame* f) { g_renderer->draw_alias_entities(f); }
+void classic_sprites(const nqr_frame* f) { g_renderer->draw_sprite_entities(f); }
+void classic_particles(const nqr_frame* f) { g_renderer->draw_particles(f); }
+
+const nqr_renderer kTable = {
+    sizeof(nqr_renderer),
+    NQR_ABI_VERSION,
+    "classic",
+    "the GLQuake look: textures, lightmaps, sky, liquids, models, sprites, particles",
+    0,
+    classic_init,
+    classic_shutdown,
+    classic_register,
+    classic_release,
+    nullptr,  // begin_frame
+    classic_world,
+    classic_brush,
+    classic_alias,
+    classic_sprites,
+    classic_particles,
+    nullptr,  // post_process
+    nullptr,  // end_frame
+};
+
+}  // namespace
+
+extern "C" NQR_EXPORT const nqr_renderer* nqr_get_renderer(uint32_t engine_abi_version,
+                                                           const nqr_engine* engine) {
+    if (NQR_ABI_MAJOR(engine_abi_version) != NQR_ABI_VERSION_MAJOR || !engine ||
+        engine->size < sizeof(nqr_engine)) {
+        return nullptr;
+    }
+    return &kTable;
+}

@@ -1,0 +1,63 @@
+/* Renderer plugins that misbehave on purpose, for the plugin-host tests. One source, built
+ * several times with a different TEST_PLUGIN_KIND each (see tests/plugins/CMakeLists.txt). */
+#include "nqr_renderer.h"
+
+#define KIND_PROBE 0    /* well-behaved; counts every call */
+#define KIND_BADABI 1   /* claims ABI major 2 */
+#define KIND_REFUSE 2   /* entry point returns NULL */
+#define KIND_FAILINIT 3 /* registers a command, then init fails */
+#define KIND_SMALL 4    /* function table smaller than ABI 1.0's */
+#define KIND_NOENTRY 5  /* no entry point at all */
+
+/* Counters a test reads back through nqr_test_counters(). */
+typedef struct probe_counters {
+    int inits, shutdowns, models_registered, models_released, frames;
+    const nqr_cvar* cvar;
+} probe_counters;
+
+static probe_counters g_counters;
+static const nqr_engine* g_engine;
+
+NQR_EXPORT probe_counters* nqr_test_counters(void) { return &g_counters; }
+
+static void probe_command(void* user, int argc, const char* const* argv) {
+    (void)user;
+    (void)argc;
+    (void)argv;
+    g_engine->log(NQR_LOG_INFO, "probe command ran");
+}
+
+static int probe_init(const nqr_engine* engine) {
+    g_engine = engine;
+    ++g_counters.inits;
+    g_counters.cvar = engine->cvar_register("probe_value", "7", NQR_CVAR_ARCHIVE, "test cvar");
+    engine->command_register("probe_cmd", probe_command, 0, "test command");
+    return TEST_PLUGIN_KIND == KIND_FAILINIT ? 1 : 0;
+}
+
+static void probe_shutdown(void) { ++g_counters.shutdowns; }
+static void probe_register(const nqr_model* m) { (void)m; ++g_counters.models_registered; }
+static void probe_release(nqr_model_id id) { (void)id; ++g_counters.models_released; }
+static void probe_frame(const nqr_frame* f) { (void)f; ++g_counters.frames; }
+
+static nqr_renderer g_table = {
+    sizeof(nqr_renderer), NQR_ABI_VERSION, "probe", "test plugin", 0,
+    probe_init, probe_shutdown, probe_register, probe_release,
+    probe_frame, 0, 0, 0, 0, 0, 0, 0,
+};
+
+/* KIND_NOENTRY exports its table under a misspelled name, so the engine finds no entry point. */
+#if TEST_PLUGIN_KIND == KIND_NOENTRY
+#define ENTRY_NAME nqr_get_renderer_misspelled
+#else
+#define ENTRY_NAME nqr_get_renderer
+#endif
+
+NQR_EXPORT const nqr_renderer* ENTRY_NAME(uint32_t version, const nqr_engine* engine) {
+    (void)version;
+    (void)engine;
+    if (TEST_PLUGIN_KIND == KIND_REFUSE) return 0;
+    if (TEST_PLUGIN_KIND == KIND_BADABI) g_table.abi_version = 2u << 16;
+    if (TEST_PLUGIN_KIND == KIND_SMALL) g_table.size = 16;
+    return &g_table;
+}

@@ -1,0 +1,35 @@
+// Counts every global operator new of the test binary that includes it, to check that per-frame
+// code allocates nothing. Replaces the global allocation functions: include it in exactly one
+// file of a test executable.
+#pragma once
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace nq::render_test {
+inline std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t n) {
+    ++nq::render_test::g_allocations;
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) {
+    ++nq::render_test::g_allocations;
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
