@@ -24,7 +24,7 @@ case $format in
     bsp) exts="bsp" ;;
     mdl) exts="mdl" ;;
     spr) exts="spr" ;;
-    dem) exts="dem" ;;
+    dem|client) exts="dem" ;;
     *) exts="" ;;
 esac
 

@@ -32,7 +32,7 @@ std::string DemoSession::start(const std::string& name, DemoMode mode) {
     if (!player) return player.error().to_string();
     client_ = std::make_unique<ClientState>();
     player_.emplace(std::move(player.value()));
-    for (const auto& w : player_->warnings()) callbacks_.print(w);
+    for (const auto& w : player_->warnings()) callbacks_.print(path + ": " + w);
     name_ = name;
     mode_ = mode;
     generation_ = 0;

@@ -12,6 +12,7 @@
 #include "console/console_font.h"
 #include "formats/bsp.h"
 #include "host/config_writer.h"
+#include "video/resident_libraries.h"
 
 namespace nq {
 
@@ -176,6 +177,7 @@ bool Engine::open_window() {
         return false;
     }
     window_.emplace(std::move(window.value()));
+    keep_loaded_libraries_resident();  // the GL driver, not plugins: see resident_libraries.h
     const GlInfo& gl = window_->gl_info();
     print("GL_RENDERER: " + gl.renderer + "\nGL_VERSION: " + gl.version);
     return true;

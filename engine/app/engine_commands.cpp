@@ -88,7 +88,8 @@ void Engine::register_commands() {
 void Engine::swap_plugin(const std::string& name) {
     std::string why = dispatch_->load_plugin(name);
     if (!why.empty()) {
-        print("r_plugin: " + why + "; keeping " + plugins_->active_name());
+        std::string current = plugins_->active_name();
+        print("r_plugin: " + why + (current.empty() ? "" : "; keeping " + current));
         return;
     }
     host_.cvars().set(*cvars_.r_plugin, name);

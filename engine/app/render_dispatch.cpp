@@ -1,5 +1,7 @@
 #include "app/render_dispatch.h"
 
+#include <epoxy/gl.h>
+
 #include "classic/classic_renderer.h"
 #include "video/gpu_pass_timers.h"
 
@@ -44,6 +46,7 @@ std::string RenderDispatch::load_plugin(const std::string& name) {
 void RenderDispatch::unload() {
     plugins_.unload();
     defaults_.reset();
+    gbuffer_.release();
 }
 
 bool RenderDispatch::plugin_draws_everything() const {
@@ -88,7 +91,16 @@ void RenderDispatch::clear_models() {
 
 void RenderDispatch::draw(const nqr_frame& frame) {
     const nqr_renderer* r = plugins_.active();
+    bool wants_gbuffer = r && (r->wants & NQR_WANTS_GBUFFER) &&
+                         gbuffer_.prepare(frame.camera.viewport[2], frame.camera.viewport[3]);
+    if (wants_gbuffer) gbuffer_.bind_and_clear();
     if (r && r->begin_frame) r->begin_frame(&frame);
+    draw_scene(r, frame);
+    if (wants_gbuffer) post_process(r, frame);
+    if (r && r->end_frame) r->end_frame(&frame);
+}
+
+void RenderDispatch::draw_scene(const nqr_renderer* r, const nqr_frame& frame) {
     for (const Pass& p : kPasses) {
         Hook hook = r ? r->*p.hook : nullptr;
         if (!hook && !defaults_) continue;
@@ -100,7 +112,26 @@ void RenderDispatch::draw(const nqr_frame& frame) {
         }
         if (timers_) timers_->end();
     }
-    if (r && r->end_frame) r->end_frame(&frame);
+}
+
+// Back on the window: the plugin's post-process pass reads the scene textures and draws the
+// final image; without one, the colour is copied over as it is.
+void RenderDispatch::post_process(const nqr_renderer* r, const nqr_frame& frame) {
+    const nqr_gbuffer& g = gbuffer_.gbuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const int* vp = frame.camera.viewport;
+    glViewport(vp[0], vp[1], vp[2], vp[3]);
+    if (timers_) timers_->begin(GpuPass::Post);
+    if (r->post_process) {
+        r->post_process(&frame, &g);
+    } else {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, g.framebuffer);
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glBlitFramebuffer(0, 0, g.width, g.height, vp[0], vp[1], vp[0] + vp[2], vp[1] + vp[3],
+                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    }
+    if (timers_) timers_->end();
 }
 
 }  // namespace nq

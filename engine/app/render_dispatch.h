@@ -8,6 +8,7 @@
 #include <string>
 
 #include "nqr_renderer.h"
+#include "app/scene_framebuffer.h"
 #include "plugin/plugin_host.h"
 
 namespace nq::npr::classic {
@@ -39,10 +40,13 @@ public:
 private:
     bool plugin_draws_everything() const;
     void sync_defaults();
+    void draw_scene(const nqr_renderer* r, const nqr_frame& frame);
+    void post_process(const nqr_renderer* r, const nqr_frame& frame);
 
     PluginHost& plugins_;
     GpuPassTimers* timers_;
     std::unique_ptr<npr::classic::ClassicRenderer> defaults_;
+    SceneFramebuffer gbuffer_;
 };
 
 }  // namespace nq

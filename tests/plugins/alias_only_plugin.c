@@ -12,9 +12,15 @@ static int alias_only_init(const nqr_engine* engine) {
 }
 
 static void alias_only_shutdown(void) {}
-static void alias_only_register(const nqr_model* model) { (void)model; }
-static void alias_only_release(nqr_model_id id) { (void)id; }
-static void draw_nothing(const nqr_frame* frame) { (void)frame; }
+static void alias_only_register(const nqr_model* model) {
+    (void)model;
+}
+static void alias_only_release(nqr_model_id id) {
+    (void)id;
+}
+static void draw_nothing(const nqr_frame* frame) {
+    (void)frame;
+}
 
 static const nqr_renderer g_table = {
     sizeof(nqr_renderer),

@@ -8,6 +8,7 @@
 #define KIND_FAILINIT 3 /* registers a command, then init fails */
 #define KIND_SMALL 4    /* function table smaller than ABI 1.0's */
 #define KIND_NOENTRY 5  /* no entry point at all */
+#define KIND_POST 6     /* wants the G-buffer; post_process shows the normals buffer */
 
 /* Counters a test reads back through nqr_test_counters(). */
 typedef struct probe_counters {
@@ -40,6 +41,27 @@ static void probe_register(const nqr_model* m) { (void)m; ++g_counters.models_re
 static void probe_release(nqr_model_id id) { (void)id; ++g_counters.models_released; }
 static void probe_frame(const nqr_frame* f) { (void)f; ++g_counters.frames; }
 
+/* KIND_POST: copies the scene's normal buffer to the screen, so a test can see what the
+ * engine put there. GL is reached through the engine's proc-address service: plugins need no
+ * GL loader of their own. */
+typedef void (*bind_fb_fn)(unsigned, unsigned);
+typedef void (*read_buffer_fn)(unsigned);
+typedef void (*blit_fn)(int, int, int, int, int, int, int, int, unsigned, unsigned);
+
+static void probe_post(const nqr_frame* f, const nqr_gbuffer* g) {
+    bind_fb_fn bind = (bind_fb_fn)g_engine->gl_get_proc_address("glBindFramebuffer");
+    read_buffer_fn read = (read_buffer_fn)g_engine->gl_get_proc_address("glReadBuffer");
+    blit_fn blit = (blit_fn)g_engine->gl_get_proc_address("glBlitFramebuffer");
+    (void)f;
+    if (!bind || !read || !blit) return;
+    bind(0x8CA8 /* GL_READ_FRAMEBUFFER */, g->framebuffer);
+    read(0x8CE1 /* GL_COLOR_ATTACHMENT1 */);
+    blit(0, 0, g->width, g->height, 0, 0, g->width, g->height, 0x4000 /* COLOR_BIT */,
+         0x2600 /* GL_NEAREST */);
+    read(0x8CE0 /* GL_COLOR_ATTACHMENT0 */);
+    bind(0x8CA8, 0);
+}
+
 static nqr_renderer g_table = {
     sizeof(nqr_renderer), NQR_ABI_VERSION, "probe", "test plugin", 0,
     probe_init, probe_shutdown, probe_register, probe_release,
@@ -59,5 +81,10 @@ NQR_EXPORT const nqr_renderer* ENTRY_NAME(uint32_t version, const nqr_engine* en
     if (TEST_PLUGIN_KIND == KIND_REFUSE) return 0;
     if (TEST_PLUGIN_KIND == KIND_BADABI) g_table.abi_version = 2u << 16;
     if (TEST_PLUGIN_KIND == KIND_SMALL) g_table.size = 16;
+    if (TEST_PLUGIN_KIND == KIND_POST) {
+        g_table.wants = NQR_WANTS_GBUFFER;
+        g_table.post_process = probe_post;
+        g_table.begin_frame = 0;
+    }
     return &g_table;
 }

@@ -25,6 +25,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "nqr_renderer.h"
+#include "video/resident_libraries.h"
 
 namespace nq::npr::test {
 
@@ -32,18 +33,7 @@ inline constexpr int kSize = 128;  // framebuffer width and height
 
 // ------------------------------------------------------------------ GL context + framebuffer
 
-// SDL unloads the GL driver on shutdown and LeakSanitizer then reports Mesa's process-lifetime
-// allocations from an unnamed module; keeping libraries resident keeps those reachable.
-inline void keep_loaded_libraries_resident() {
-    dl_iterate_phdr(
-        [](dl_phdr_info* info, size_t, void*) {
-            if (info->dlpi_name && info->dlpi_name[0] != '\0') {
-                dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-            }
-            return 0;
-        },
-        nullptr);
-}
+using nq::keep_loaded_libraries_resident;  // see video/resident_libraries.h
 
 struct Rgb {
     int r = 0, g = 0, b = 0;

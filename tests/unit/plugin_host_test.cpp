@@ -81,8 +81,9 @@ TEST(PluginHost, ListsPluginsInDirectory) {
     PluginHost host(services, test::test_plugin_dir());
     std::vector<std::string> names;
     for (const auto& p : host.available()) names.push_back(p.name);
-    std::vector<std::string> expected = {"test_badabi",   "test_failinit", "test_noentry",
-                                         "test_probe",    "test_refuse",   "test_small"};
+    std::vector<std::string> expected = {"test_badabi", "test_failinit", "test_noentry",
+                                         "test_post",   "test_probe",    "test_refuse",
+                                         "test_small"};
     EXPECT_EQ(names, expected);
 }
 

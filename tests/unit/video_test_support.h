@@ -2,6 +2,8 @@
 // llvmpipe through EGL, no X server needed) and a scratch directory.
 #pragma once
 
+#include "video/resident_libraries.h"
+
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 #include <link.h>
@@ -15,21 +17,6 @@
 #include "video/video_window.h"
 
 namespace nq::test {
-
-// SDL unloads the GL driver when video shuts down; LeakSanitizer then reports Mesa's own
-// process-lifetime allocations from an "<unknown module>" it cannot suppress by name. Keeping
-// every loaded library resident (RTLD_NODELETE) lets those stay reachable, so the report stays
-// clean without hiding leaks of our own.
-inline void keep_loaded_libraries_resident() {
-    dl_iterate_phdr(
-        [](dl_phdr_info* info, size_t, void*) {
-            if (info->dlpi_name && info->dlpi_name[0] != '\0') {
-                dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-            }
-            return 0;
-        },
-        nullptr);
-}
 
 inline VideoOptions offscreen_options(int width = 64, int height = 48) {
     VideoOptions options;
