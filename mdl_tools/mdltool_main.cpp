@@ -4,6 +4,8 @@
 #include <string_view>
 #include <vector>
 
+#include "adjacency_command.h"
+#include "export_command.h"
 #include "info_command.h"
 #include "subcommand.h"
 
@@ -14,6 +16,10 @@ using nq::mdltool::Subcommand;
 constexpr Subcommand kSubcommands[] = {
     {"info", "info [--json] FILE|DIR...  header, skins, frames, bounds and warnings",
      nq::mdltool::run_info},
+    {"adjacency", "adjacency [--json] [--time] FILE|DIR|PAK...  welds, splits, edges, verdict",
+     nq::mdltool::run_adjacency},
+    {"export", "export FILE [--frame N | --all-frames] [-o OUT.obj|.ply|.off]  mesh for Blender",
+     nq::mdltool::run_export},
 };
 
 void print_usage(std::FILE* to) {
