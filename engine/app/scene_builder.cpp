@@ -58,8 +58,8 @@ const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
     frame_.time = client.time();
     frame_.real_time = real_time;
     frame_.frame_time = frame_time;
-    frame_.flags = (view.underwater ? NQR_FRAME_UNDERWATER : 0u) |
-                   (view.intermission ? NQR_FRAME_INTERMISSION : 0u);
+    frame_.flags = (view.underwater ? uint32_t{NQR_FRAME_UNDERWATER} : 0u) |
+                   (view.intermission ? uint32_t{NQR_FRAME_INTERMISSION} : 0u);
     fill_camera(camera, frame_.camera);
 
     auto styles = client.light_style_values();
