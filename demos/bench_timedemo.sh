@@ -80,13 +80,16 @@ for r in rows:
     name = r["engine"] + (":" + r["plugin"] if r["plugin"] else "")
     if r["fps"] is not None:
         groups.setdefault(key, {}).setdefault(name, []).append(r["fps"])
-lines = ["| demo | resolution | engine | runs | median fps | ratio vs quakespasm |", "|---|---|---|---|---|---|"]
+lines = ["| demo | resolution | engine | runs | median fps | ratio vs quakespasm | ratio vs classic |",
+         "|---|---|---|---|---|---|---|"]
 for (demo, res), engines in sorted(groups.items()):
     peer = statistics.median(engines["quakespasm"]) if "quakespasm" in engines else None
+    classic = statistics.median(engines["nprquake:classic"]) if "nprquake:classic" in engines else None
     for name, fps in sorted(engines.items()):
         med = statistics.median(fps)
         ratio = "%.2fx" % (med / peer) if peer else "-"
-        lines.append("| %s | %s | %s | %d | %.1f | %s |" % (demo, res, name, len(fps), med, ratio))
+        vs_classic = "%.2fx" % (med / classic) if classic and name.startswith("nprquake:") else "-"
+        lines.append("| %s | %s | %s | %d | %.1f | %s | %s |" % (demo, res, name, len(fps), med, ratio, vs_classic))
 open(sys.argv[2], "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
 PY

@@ -36,6 +36,7 @@ std::string DemoSession::start(const std::string& name, DemoMode mode) {
     name_ = name;
     mode_ = mode;
     generation_ = 0;
+    paused_ = false;
     return {};
 }
 
@@ -44,10 +45,16 @@ void DemoSession::stop() {
     if (level_.loaded() && callbacks_.level_unloading) callbacks_.level_unloading();
     level_.clear();
     player_.reset();
+    paused_ = false;
 }
 
 FrameStatus DemoSession::frame(double frame_time) {
     if (!player_) return FrameStatus::Ended;
+    if (paused_) {
+        // No time passes (old time = time): the view and the scene see a still instant.
+        client_->advance_clock(0);
+        return FrameStatus::Playing;
+    }
     FrameStatus status = player_->read_frame(*client_, frame_time);
     if (client_->generation() != generation_) {
         generation_ = client_->generation();

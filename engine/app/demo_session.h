@@ -33,7 +33,13 @@ public:
     void stop();
     bool active() const { return player_.has_value(); }
 
-    // Plays one host frame; returns Ended when the demo finished (or failed) in it.
+    // A paused demo reads nothing and its clock stands still, so the same instant is drawn
+    // again and again. Only a playing demo can be paused; starting or stopping one unpauses.
+    void set_paused(bool paused) { paused_ = paused && active(); }
+    bool paused() const { return paused_; }
+
+    // Plays one host frame (or, paused, holds the current one); returns Ended when the demo
+    // finished (or failed) in it.
     FrameStatus frame(double frame_time);
 
     const std::string& name() const { return name_; }
@@ -55,6 +61,7 @@ private:
     std::string name_;
     DemoMode mode_ = DemoMode::Playback;
     uint32_t generation_ = 0;
+    bool paused_ = false;
 };
 
 }  // namespace nq

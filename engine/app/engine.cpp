@@ -45,6 +45,7 @@ Engine::~Engine() {
     plugins_.reset();
     console_drawer_.reset();
     gpu_timers_.shutdown();
+    throttle_.release();
 }
 
 double Engine::seconds() const {
@@ -76,6 +77,10 @@ bool Engine::start() {
     cvars_.host_maxfps = host_.cvars().register_cvar(
         {"host_maxfps", "250", kCvarArchive,
          "frame rate cap outside timedemo (0 = uncapped)", 0.0f, 10000.0f});
+    cvars_.showroom_time = host_.cvars().register_cvar(
+        {"showroom_time", "-1", 0,
+         "showroom clock in seconds: -1 follows the wall clock, >= 0 holds the scene still", -1.0f,
+         1.0e6f});
 
     mount_game_data();
     if (!open_window()) return false;
@@ -99,6 +104,8 @@ bool Engine::start() {
     wiring.gpu_timers = &gpu_timers_;
     wiring.log = [this](int, std::string_view text) { print(text); };
     wiring.trace = [this](const float s[3], const float e[3], nqr_trace* out) {
+        const bool demo_shown = demo_ && demo_->active();
+        if (showroom_ && !demo_shown) return Showroom::trace(s, e, out);
         const Bsp* bsp = demo_ ? demo_->level().world_bsp() : nullptr;
         if (!bsp) return;
         BspTrace t = trace_hull(*bsp, 0, {s[0], s[1], s[2]}, {e[0], e[1], e[2]});
@@ -209,17 +216,11 @@ void Engine::frame() {
     handle_events();
     host_.commands().execute();
     console_->update(now - start_seconds_);
-    bool timing = demo_->active() && demo_->mode() == DemoMode::TimeDemo;
+    // A paused demo draws the same instant again: timedemo does not count those frames.
+    bool timing = demo_->active() && demo_->mode() == DemoMode::TimeDemo && !demo_->paused();
     if (demo_->active()) {
         FrameStatus status = demo_->frame(frame_time);
-        for (auto it = demo_schedule_.begin(); it != demo_schedule_.end();) {
-            if (demo_->player() && demo_->player()->frames() >= it->first) {
-                host_.commands().add_text(it->second + "\n");
-                it = demo_schedule_.erase(it);
-            } else {
-                ++it;
-            }
-        }
+        run_demo_schedule();
         if (status == FrameStatus::Ended) {
             end_demo();
             timing = false;
@@ -235,6 +236,19 @@ void Engine::frame() {
     if (!timing && cvars_.host_maxfps->value() > 0) {
         double budget = 1.0 / cvars_.host_maxfps->value() - (seconds() - now);
         if (budget > 0) std::this_thread::sleep_for(std::chrono::duration<double>(budget));
+    }
+}
+
+// demo_at: the commands of every frame the demo has reached (demo frames, not drawn ones).
+void Engine::run_demo_schedule() {
+    const DemoPlayer* player = demo_->player();
+    for (auto it = demo_schedule_.begin(); it != demo_schedule_.end();) {
+        if (player && player->frames() >= it->first) {
+            host_.commands().add_text(it->second + "\n");
+            it = demo_schedule_.erase(it);
+        } else {
+            ++it;
+        }
     }
 }
 
@@ -264,7 +278,9 @@ void Engine::render(double frame_time) {
     glViewport(0, 0, window_->drawable_width(), window_->drawable_height());
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gpu_timers_.begin_frame();
+    // GPU time of paused frames stays out of the timedemo report, like their CPU time.
+    bool timed = !demo_->paused();
+    if (timed) gpu_timers_.begin_frame();
     double real_time = seconds() - start_seconds_;
     if (demo_->active() && demo_->level_ready()) {
         render_demo(real_time, static_cast<float>(frame_time));
@@ -272,11 +288,17 @@ void Engine::render(double frame_time) {
         render_showroom(real_time, static_cast<float>(frame_time));
     }
     if (console_drawer_) console_drawer_->draw(*console_);
-    gpu_timers_.end_frame();
+    if (timed) gpu_timers_.end_frame();
     window_->swap();
+    throttle_.frame_submitted();
 }
 
 void Engine::render_demo(double real_time, float frame_time) {
+    if (demo_->paused()) {  // the instant drawn last, its wall clock included
+        real_time = demo_real_time_;
+        frame_time = 0;
+    }
+    demo_real_time_ = real_time;
     Level& level = demo_->level();
     ViewSettings settings;
     settings.contents_at = &contents_at;
@@ -291,6 +313,10 @@ void Engine::render_showroom(double real_time, float frame_time) {
     CameraSetup camera = Showroom::default_camera(window_->drawable_width(),
                                                   window_->drawable_height());
     camera.fov_x = cvars_.fov->value();
+    if (float fixed = cvars_.showroom_time->value(); fixed >= 0) {  // a still scene
+        real_time = fixed;
+        frame_time = 0;
+    }
     dispatch_->draw(showroom_->build(scene_, camera, real_time, real_time, frame_time));
 }
 

@@ -3,7 +3,8 @@
 // (a demo's level, or the showroom), and runs the frame loop:
 //
 //   events -> command buffer -> demo (client state) -> scene (nqr_frame) -> plugin hooks
-//   -> console -> swap -> timedemo statistics
+//   -> console -> swap (and wait while the driver has too many frames queued)
+//   -> timedemo statistics
 #pragma once
 
 #include <memory>
@@ -26,6 +27,7 @@
 #include "host/launch_options.h"
 #include "plugin/plugin_host.h"
 #include "video/frame_stats.h"
+#include "video/frame_throttle.h"
 #include "video/gpu_pass_timers.h"
 #include "video/video_window.h"
 
@@ -35,6 +37,7 @@ struct EngineCvars {
     Cvar* r_plugin = nullptr;
     Cvar* fov = nullptr;
     Cvar* host_maxfps = nullptr;
+    Cvar* showroom_time = nullptr;
 };
 
 class Engine {
@@ -62,6 +65,7 @@ private:
     void render(double frame_time);
     void render_demo(double real_time, float frame_time);
     void render_showroom(double real_time, float frame_time);
+    void run_demo_schedule();
     CameraSetup camera_for(const ViewResult& view) const;
     void handle_events();
     double seconds() const;
@@ -77,6 +81,7 @@ private:
     void register_commands();
     void start_demo(const std::string& name, DemoMode mode);
     void end_demo();
+    void pause_demo(const CommandArgs& args);
     void report_timedemo();
     void screenshot(const std::string& name);
     void swap_plugin(const std::string& name);
@@ -89,6 +94,7 @@ private:
     GameData game_data_;
     std::optional<VideoWindow> window_;
     GpuPassTimers gpu_timers_;
+    FrameThrottle throttle_;  // after window_: goes while the context is still there
     std::unique_ptr<Console> console_;
     std::optional<ConsoleDrawer> console_drawer_;
     std::unique_ptr<HostServices> services_;
@@ -108,6 +114,7 @@ private:
     double start_seconds_ = 0;
     double last_frame_seconds_ = 0;
     double first_frame_seconds_ = -1;  // for the start-up-to-first-frame report
+    double demo_real_time_ = 0;        // wall clock of the demo frame drawn last (for pause)
     uint64_t frame_count_ = 0;
     bool quit_ = false;
     int exit_status_ = 0;

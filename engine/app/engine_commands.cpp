@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "app/engine.h"
+#include "host/number_text.h"
 #include "video/bench_record.h"
 #include "video/screenshot.h"
 
@@ -39,6 +40,9 @@ void Engine::register_commands() {
         "play a demo as fast as possible and report the frame rate");
     c.add_command(
         "stop", [this](const CommandArgs&) { end_demo(); }, "stop the demo being played");
+    c.add_command(
+        "pause", [this](const CommandArgs& a) { pause_demo(a); },
+        "freeze the demo being played (pause [0|1]; no argument toggles)");
     c.add_command(
         "demo_at",
         [this](const CommandArgs& a) {
@@ -119,6 +123,14 @@ void Engine::end_demo() {
         host_.commands().insert_text(after_demo_text_);
         after_demo_text_.clear();
     }
+}
+
+void Engine::pause_demo(const CommandArgs& args) {
+    if (!demo_->active()) return print("pause: no demo is playing");
+    bool on = !demo_->paused();
+    if (args.argc() > 1) on = parse_number_prefix(args.argv(1)) != 0;
+    demo_->set_paused(on);
+    print(on ? "paused" : "unpaused");
 }
 
 void Engine::report_timedemo() {

@@ -311,4 +311,29 @@ const nqr_frame& Showroom::build(SceneBuilder& scene, const CameraSetup& camera,
     return scene.finish_custom();
 }
 
+namespace {
+
+bool over_floor(float x, float y) {
+    return std::abs(x) <= Showroom::kFloorHalfSize && std::abs(y) <= Showroom::kFloorHalfSize;
+}
+
+}  // namespace
+
+void Showroom::trace(const float start[3], const float end[3], nqr_trace* out) {
+    out->fraction = 1.0f;
+    std::copy(end, end + 3, out->end);
+    out->start_solid = start[2] < 0.0f && over_floor(start[0], start[1]) ? 1 : 0;
+    if (out->start_solid || start[2] < 0.0f || end[2] >= 0.0f) return;
+    const float t = start[2] / (start[2] - end[2]);
+    const float x = start[0] + t * (end[0] - start[0]), y = start[1] + t * (end[1] - start[1]);
+    if (!over_floor(x, y)) return;
+    out->fraction = t;
+    out->end[0] = x;
+    out->end[1] = y;
+    out->end[2] = 0.0f;
+    out->plane_normal[0] = out->plane_normal[1] = 0.0f;
+    out->plane_normal[2] = 1.0f;
+    out->plane_dist = 0.0f;
+}
+
 }  // namespace nq

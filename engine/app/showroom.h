@@ -45,6 +45,10 @@ public:
     float model_yaw(double time) const;
     size_t model_count() const { return alias_.size(); }
 
+    // The engine's trace service while the showroom is shown: the floor is the top (z = 0) of
+    // a solid slab under the floor square; everything else is open space.
+    static void trace(const float start[3], const float end[3], nqr_trace* out);
+
 private:
     struct AliasStorage;
     struct FloorStorage;

@@ -7,7 +7,7 @@
 namespace nq {
 
 DemoPlayer::DemoPlayer(Demo demo, std::string name, DemoMode mode)
-    : demo_(std::move(demo)), name_(std::move(name)), mode_(mode) {
+    : demo_(std::move(demo)), name_(std::move(name)), mode_(mode), decoder_(name_) {
     warnings_ = demo_.warnings;
 }
 
@@ -56,15 +56,14 @@ bool DemoPlayer::read_block(ClientState& client) {
     }
     const size_t index = next_block_++;
     const DemoBlock& block = demo_.blocks[index];
-    auto decoded =
-        decode_server_message(block.message, {name_, index, block.message_offset()}, protocol_);
-    if (!decoded) {
-        end(decoded.error());
+    if (auto error = decoder_.decode(block.message, index, block.message_offset(), protocol_)) {
+        end(std::move(error));
         return false;
     }
-    for (std::string& w : decoded->warnings) warnings_.push_back(std::move(w));
+    DecodedBlock& decoded = decoder_.block();
+    for (std::string& w : decoded.warnings) warnings_.push_back(std::move(w));
     client.receive_block_angles(block.view_angles);
-    for (const DecodedMessage& m : decoded->messages) {
+    for (const DecodedMessage& m : decoded.messages) {
         if (auto problem = client.apply(m.message)) {
             std::string where = "block " + std::to_string(index) + ": ";
             end(Error{name_, block.message_offset() + m.offset, where + *problem});

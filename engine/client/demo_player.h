@@ -21,6 +21,7 @@
 #include "common/error.h"
 #include "common/result.h"
 #include "formats/dem.h"
+#include "formats/message_decoder.h"
 #include "formats/protocol.h"
 
 namespace nq {
@@ -67,6 +68,7 @@ class DemoPlayer {
     std::string name_;
     DemoMode mode_;
     protocol::ProtocolState protocol_;
+    ServerMessageDecoder decoder_;  // its storage is reused block after block
     size_t next_block_ = 0;
     uint64_t frames_ = 0;
     bool ended_ = false;

@@ -8,6 +8,12 @@ namespace nq {
 ByteReader::ByteReader(std::span<const uint8_t> data, std::string file, uint64_t base)
     : data_(data), file_(std::move(file)), base_(base) {}
 
+void ByteReader::restart(std::span<const uint8_t> data, uint64_t base) {
+    data_ = data;
+    base_ = base;
+    pos_ = 0;
+}
+
 void ByteReader::fail_at(size_t pos, std::string message) const {
     throw FormatError(Error{file_, base_ + pos, std::move(message)});
 }

@@ -19,6 +19,10 @@ public:
     // (a lump, a pak entry) still point at the right byte of the file.
     ByteReader(std::span<const uint8_t> data, std::string file, uint64_t base = 0);
 
+    // Starts over on `data` (at `base` in the same file), keeping the file name: a reader
+    // reused for buffer after buffer copies the name once, not per buffer.
+    void restart(std::span<const uint8_t> data, uint64_t base = 0);
+
     size_t size() const { return data_.size(); }
     size_t tell() const { return pos_; }
     size_t remaining() const { return data_.size() - pos_; }

@@ -449,14 +449,32 @@ std::string message_label(int cmd) {
 }
 
 // Re-throws a field error with the block and the message being decoded in front.
-[[noreturn]] void rethrow_in_context(const FormatError& e, const MessageSource& source, int cmd,
+[[noreturn]] void rethrow_in_context(const FormatError& e, size_t block_index, int cmd,
                                      size_t start, int previous_cmd) {
     std::string previous = previous_cmd < 0 ? "none" : message_label(previous_cmd);
     Error err = e.error();
-    err.message = "block " + std::to_string(source.block_index) + ": " + message_label(cmd) +
+    err.message = "block " + std::to_string(block_index) + ": " + message_label(cmd) +
                   " at message byte " + std::to_string(start) + " (previous: " + previous +
                   "): " + err.message;
     throw FormatError(std::move(err));
+}
+
+// Decodes every message left in `r` into `block` (appending), with errors in context.
+void decode_messages(ByteReader& r, size_t block_index, protocol::ProtocolState& state,
+                     DecodedBlock& block) {
+    Decoder decoder(r, state, block.warnings);
+    int previous_cmd = -1;  // for error messages only
+    while (!r.at_end()) {
+        size_t start = r.tell();
+        int cmd = r.u8();
+        try {
+            ServerMessage message = decoder.decode(cmd, start);
+            block.messages.push_back({start, r.tell() - start, std::move(message)});
+        } catch (const FormatError& e) {
+            rethrow_in_context(e, block_index, cmd, start, previous_cmd);
+        }
+        previous_cmd = cmd;
+    }
 }
 
 }  // namespace
@@ -467,21 +485,25 @@ Result<DecodedBlock> decode_server_message(std::span<const uint8_t> buffer,
     return capture_errors(source.file, [&]() -> DecodedBlock {
         ByteReader r(buffer, source.file, source.file_offset);
         DecodedBlock block;
-        Decoder decoder(r, state, block.warnings);
-        int previous_cmd = -1;  // for error messages only
-        while (!r.at_end()) {
-            size_t start = r.tell();
-            int cmd = r.u8();
-            try {
-                ServerMessage message = decoder.decode(cmd, start);
-                block.messages.push_back({start, r.tell() - start, std::move(message)});
-            } catch (const FormatError& e) {
-                rethrow_in_context(e, source, cmd, start, previous_cmd);
-            }
-            previous_cmd = cmd;
-        }
+        decode_messages(r, source.block_index, state, block);
         return block;
     });
+}
+
+ServerMessageDecoder::ServerMessageDecoder(std::string file) : reader_({}, std::move(file)) {}
+
+std::optional<Error> ServerMessageDecoder::decode(std::span<const uint8_t> buffer,
+                                                  size_t block_index, uint64_t file_offset,
+                                                  protocol::ProtocolState& state) {
+    block_.messages.clear();  // keeps the capacity
+    block_.warnings.clear();
+    reader_.restart(buffer, file_offset);
+    auto decoded = capture_errors(reader_.file(), [&] {
+        decode_messages(reader_, block_index, state, block_);
+        return true;
+    });
+    if (!decoded) return decoded.error();
+    return std::nullopt;
 }
 
 }  // namespace nq

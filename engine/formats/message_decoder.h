@@ -4,10 +4,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "common/byte_reader.h"
 #include "common/result.h"
 #include "formats/protocol.h"
 #include "formats/server_message.h"
@@ -41,5 +43,30 @@ struct DecodedBlock {
 Result<DecodedBlock> decode_server_message(std::span<const uint8_t> buffer,
                                            const MessageSource& source,
                                            protocol::ProtocolState& state);
+
+// The same decoding for a reader of many blocks of one file (a demo player, a block per frame):
+// the block is decoded into storage kept from call to call. Once its vectors have grown to the
+// largest block, decoding allocates only for the text a message carries (print, centerprint,
+// stufftext, finale, lightstyle patterns, names, precache lists) when it is longer than a
+// std::string holds in place, and for errors and warnings.
+class ServerMessageDecoder {
+  public:
+    explicit ServerMessageDecoder(std::string file);
+
+    // Decodes `buffer` (block `block_index`, whose first byte is at `file_offset`) into block();
+    // nullopt on success, else the Error decode_server_message would return. On error, block()
+    // holds the messages decoded before it.
+    std::optional<Error> decode(std::span<const uint8_t> buffer, size_t block_index,
+                                uint64_t file_offset, protocol::ProtocolState& state);
+
+    // The last block decoded; valid until the next decode(). Mutable so that warnings can be
+    // moved out.
+    DecodedBlock& block() { return block_; }
+    const DecodedBlock& block() const { return block_; }
+
+  private:
+    ByteReader reader_;
+    DecodedBlock block_;
+};
 
 }  // namespace nq

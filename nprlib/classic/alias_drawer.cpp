@@ -3,25 +3,22 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "classic/abi_access.h"
+#include "classic/alias_pose_glsl.h"
 #include "gl/texture_upload.h"
 
 namespace nq::npr::classic {
 namespace {
 
-constexpr char kVertex[] = R"(#version 330 core
+// The pose library (alias_pose_glsl.h) goes between the header and the body.
+constexpr char kVertexHeader[] = "#version 330 core\n";
+constexpr char kVertexBody[] = R"(
 layout(location = 0) in uint a_pose_vertex;
 layout(location = 1) in vec2 a_uv;
-uniform usamplerBuffer u_poses;
-uniform int u_num_vertices;
-uniform int u_pose0;
-uniform int u_pose1;
-uniform float u_lerp;
-uniform vec3 u_scale;
-uniform vec3 u_origin;
 uniform mat4 u_model;
 uniform mat4 u_view_projection;
 uniform mat3 u_normal_to_view;
@@ -32,16 +29,9 @@ uniform vec3 u_light_color;
 out vec2 v_uv;
 out vec3 v_shade;
 out vec3 v_normal;
-int texel_of(int pose) { return (pose * u_num_vertices + int(a_pose_vertex)) * 2; }
-vec3 unpack_normal(uvec4 texel) { return (vec3(texel.xyz) - 127.5) / 127.5; }
 void main() {
-    uvec4 p0 = texelFetch(u_poses, texel_of(u_pose0));
-    uvec4 p1 = texelFetch(u_poses, texel_of(u_pose1));
-    vec3 packed_position = mix(vec3(p0.xyz), vec3(p1.xyz), u_lerp);
-    vec3 n0 = unpack_normal(texelFetch(u_poses, texel_of(u_pose0) + 1));
-    vec3 n1 = unpack_normal(texelFetch(u_poses, texel_of(u_pose1) + 1));
-    vec3 normal = mix(n0, n1, u_lerp);
-    vec4 world = u_model * vec4(u_scale * packed_position + u_origin, 1.0);
+    vec3 normal = pose_normal(int(a_pose_vertex));
+    vec4 world = u_model * vec4(pose_position(int(a_pose_vertex)), 1.0);
     gl_Position = u_view_projection * world;
     vec3 world_normal = mat3(u_model) * normal;
     float len = length(world_normal);
@@ -97,7 +87,9 @@ bool in_pass(const nqr_entity& entity, int pass_index) {
 }  // namespace
 
 bool AliasDrawer::init(gl::ObjectTracker* tracker, const uint8_t* palette_rgb, std::string& error) {
-    gl::ProgramBuild build = gl::Program::build({"classic alias", kVertex, kFragment}, tracker);
+    const std::string vertex = std::string(kVertexHeader) + kAliasPoseLibrary + kVertexBody;
+    gl::ProgramBuild build =
+        gl::Program::build({"classic alias", vertex.c_str(), kFragment}, tracker);
     if (!build.ok()) {
         error = build.error;
         return false;
@@ -147,19 +139,10 @@ void AliasDrawer::draw_entity(const nqr_frame& frame, const FrameView& view,
                               const nqr_entity& entity, const AliasModelGpu& model) {
     const SkinImageGpu* image = model.skin_image(entity.skin, entity.skin_image);
     if (!image) return;
-    const nqr_alias_model& source = model.model();
-    const uint32_t last_pose = source.num_poses - 1;
     program_.use();
     glUniformMatrix4fv(program_.location("u_view_projection"), 1, GL_FALSE,
                        glm::value_ptr(view.view_projection));
-    glUniform1i(program_.location("u_num_vertices"), static_cast<GLint>(source.num_vertices));
-    glUniform1i(program_.location("u_pose0"),
-                static_cast<GLint>(std::min(entity.pose0, last_pose)));
-    glUniform1i(program_.location("u_pose1"),
-                static_cast<GLint>(std::min(entity.pose1, last_pose)));
-    glUniform1f(program_.location("u_lerp"), std::clamp(entity.lerp, 0.0f, 1.0f));
-    glUniform3fv(program_.location("u_scale"), 1, source.scale);
-    glUniform3fv(program_.location("u_origin"), 1, source.origin);
+    set_alias_pose_uniforms(program_, model, entity, kUnitPoses);
     const glm::mat4 model_matrix = mat4_from(entity.model_matrix);
     glUniformMatrix4fv(program_.location("u_model"), 1, GL_FALSE, entity.model_matrix);
     const glm::mat3 normals = normal_to_view(view, model_matrix);
@@ -172,8 +155,6 @@ void AliasDrawer::draw_entity(const nqr_frame& frame, const FrameView& view,
     glBindTexture(GL_TEXTURE_2D, skin_texture(frame, entity, model, *image));
     glActiveTexture(GL_TEXTURE0 + kUnitFullbright);
     glBindTexture(GL_TEXTURE_2D, image->fullbright ? image->fullbright.id() : black_.id());
-    glActiveTexture(GL_TEXTURE0 + kUnitPoses);
-    glBindTexture(GL_TEXTURE_BUFFER, model.pose_texture());
     glBindVertexArray(model.vertex_array());
     // Quake winds alias triangles clockwise seen from outside: cull the inside (as GLQuake did),
     // which also keeps a translucent model from blending its far side in.

@@ -38,6 +38,11 @@ class AliasDrawer {
     void draw_entity(const nqr_frame& frame, const FrameView& view, const nqr_entity& entity,
                      const AliasModelGpu& model);
 
+    // The skin texture to draw `entity` with: its skin image, or a player-colour translated copy
+    // (made on first use, then cached). Shared with NPR drawers that start from the skin.
+    GLuint skin_texture(const nqr_frame& frame, const nqr_entity& entity,
+                        const AliasModelGpu& model, const SkinImageGpu& image);
+
     void forget_model(nqr_model_id id) { translated_.forget_model(id); }
     const TranslatedSkins& translated_skins() const { return translated_; }
 
@@ -48,8 +53,6 @@ class AliasDrawer {
     void draw_pass(const nqr_frame& frame, const FrameView& view, const ModelRegistry& models,
                    Pass pass);
     void set_lighting(const nqr_entity& entity);
-    GLuint skin_texture(const nqr_frame& frame, const nqr_entity& entity,
-                        const AliasModelGpu& model, const SkinImageGpu& image);
 
     gl::Program program_;
     gl::Texture black_;

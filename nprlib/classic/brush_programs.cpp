@@ -1,5 +1,7 @@
 #include "classic/brush_programs.h"
 
+#include <string>
+
 namespace nq::npr::classic {
 namespace {
 
@@ -28,46 +30,45 @@ void main() {
 }
 )";
 
-constexpr char kLitFragment[] = R"(#version 330 core
+// What every brush fragment shader shares: the vertex shader's outputs, the two targets, and
+// the view-space normal written to the second one.
+constexpr char kFragmentHeader[] = R"(#version 330 core
 in vec2 v_uv;
 in vec2 v_texel;
 in vec3 v_lightmap;
 in vec3 v_normal;
 in vec3 v_world;
+layout(location = 0) out vec4 o_color;
+layout(location = 1) out vec4 o_normal;
+void write_normal() { o_normal = vec4(normalize(v_normal) * 0.5 + 0.5, 1.0); }
+)";
+
+constexpr char kLitFragment[] = R"(
 uniform sampler2D u_texture;
 uniform sampler2D u_fullbright;
 uniform sampler2DArray u_lightmap;
 uniform float u_overbright;
 uniform float u_alpha;
 uniform float u_alpha_cutoff;
-layout(location = 0) out vec4 o_color;
-layout(location = 1) out vec4 o_normal;
 void main() {
     vec4 base = texture(u_texture, v_uv);
     if (base.a < u_alpha_cutoff) discard;
     vec3 light = texture(u_lightmap, v_lightmap).rgb * u_overbright;
     vec3 color = base.rgb * light + texture(u_fullbright, v_uv).rgb;
     o_color = vec4(color, u_alpha);
-    o_normal = vec4(normalize(v_normal) * 0.5 + 0.5, 1.0);
+    write_normal();
 }
 )";
 
 // Quake's sky: the view direction to the surface, flattened (z x 3) and pushed out to a sphere
 // of radius 6 x 63, gives the layer coordinates in 128-texel units; the back layer scrolls at 8
 // and the front at 16 units a second (the scroll arrives in u_scroll, wrapped on the CPU).
-constexpr char kSkyFragment[] = R"(#version 330 core
-in vec2 v_uv;
-in vec2 v_texel;
-in vec3 v_lightmap;
-in vec3 v_normal;
-in vec3 v_world;
+constexpr char kSkyFragment[] = R"(
 uniform sampler2D u_texture;
 uniform sampler2D u_fullbright;
 uniform vec3 u_eye;
 uniform vec2 u_scroll;
 uniform float u_alpha;
-layout(location = 0) out vec4 o_color;
-layout(location = 1) out vec4 o_normal;
 void main() {
     vec3 direction = v_world - u_eye;
     direction.z *= 3.0;
@@ -75,33 +76,27 @@ void main() {
     vec4 back = texture(u_texture, (u_scroll.x + sphere) / 128.0);
     vec4 front = texture(u_fullbright, (u_scroll.y + sphere) / 128.0);
     o_color = vec4(mix(back.rgb, front.rgb, front.a), u_alpha);
-    o_normal = vec4(normalize(v_normal) * 0.5 + 0.5, 1.0);
+    write_normal();
 }
 )";
 
 // Quake's turbulence: s' = s + 8 sin(t / 8 + time), t' = t + 8 sin(s / 8 + time), in texels.
-constexpr char kLiquidFragment[] = R"(#version 330 core
-in vec2 v_uv;
-in vec2 v_texel;
-in vec3 v_lightmap;
-in vec3 v_normal;
-in vec3 v_world;
+constexpr char kLiquidFragment[] = R"(
 uniform sampler2D u_texture;
 uniform vec2 u_texture_size;
 uniform float u_time;
 uniform float u_alpha;
-layout(location = 0) out vec4 o_color;
-layout(location = 1) out vec4 o_normal;
 void main() {
     vec2 warped = v_texel + 8.0 * sin(v_texel.yx * 0.125 + u_time);
     o_color = vec4(texture(u_texture, warped / u_texture_size).rgb, u_alpha);
-    o_normal = vec4(normalize(v_normal) * 0.5 + 0.5, 1.0);
+    write_normal();
 }
 )";
 
-bool build_one(gl::Program& out, const gl::ProgramSource& source, gl::ObjectTracker* tracker,
-               std::string& error) {
-    gl::ProgramBuild build = gl::Program::build(source, tracker);
+bool build_one(gl::Program& out, const char* name, const char* fragment_body,
+               gl::ObjectTracker* tracker, std::string& error) {
+    const std::string fragment = std::string(kFragmentHeader) + fragment_body;
+    gl::ProgramBuild build = gl::Program::build({name, kVertex, fragment.c_str()}, tracker);
     if (!build.ok()) {
         error = build.error;
         return false;
@@ -114,9 +109,9 @@ bool build_one(gl::Program& out, const gl::ProgramSource& source, gl::ObjectTrac
 }  // namespace
 
 bool BrushPrograms::build(gl::ObjectTracker* tracker, std::string& error) {
-    return build_one(lit, {"classic brush (lit)", kVertex, kLitFragment}, tracker, error) &&
-           build_one(sky, {"classic brush (sky)", kVertex, kSkyFragment}, tracker, error) &&
-           build_one(liquid, {"classic brush (liquid)", kVertex, kLiquidFragment}, tracker, error);
+    return build_one(lit, "classic brush (lit)", kLitFragment, tracker, error) &&
+           build_one(sky, "classic brush (sky)", kSkyFragment, tracker, error) &&
+           build_one(liquid, "classic brush (liquid)", kLiquidFragment, tracker, error);
 }
 
 void BrushPrograms::reset() {

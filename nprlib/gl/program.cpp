@@ -13,7 +13,16 @@ std::string trimmed(std::string text) {
 }
 
 const char* stage_name(GLenum stage) {
-    return stage == GL_VERTEX_SHADER ? "vertex" : stage == GL_FRAGMENT_SHADER ? "fragment" : "?";
+    switch (stage) {
+        case GL_VERTEX_SHADER:
+            return "vertex";
+        case GL_GEOMETRY_SHADER:
+            return "geometry";
+        case GL_FRAGMENT_SHADER:
+            return "fragment";
+        default:
+            return "?";
+    }
 }
 
 // Compiles one stage; returns an empty handle and fills `error` on failure.
@@ -62,16 +71,23 @@ ProgramBuild Program::build(const ProgramSource& source, ObjectTracker* tracker)
     Shader fragment =
         compile_stage(GL_FRAGMENT_SHADER, source.fragment, name, tracker, result.error);
     if (!fragment) return result;
+    Shader geometry;
+    if (source.geometry) {
+        geometry = compile_stage(GL_GEOMETRY_SHADER, source.geometry, name, tracker, result.error);
+        if (!geometry) return result;
+    }
 
     ProgramName program = ProgramName::create(tracker);
     glAttachShader(program.id(), vertex.id());
     glAttachShader(program.id(), fragment.id());
+    if (geometry) glAttachShader(program.id(), geometry.id());
     glLinkProgram(program.id());
     GLint linked = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
     // The shaders are flagged for deletion with the program once detached.
     glDetachShader(program.id(), vertex.id());
     glDetachShader(program.id(), fragment.id());
+    if (geometry) glDetachShader(program.id(), geometry.id());
     if (linked != GL_TRUE) {
         result.error =
             std::string(name) + ": program failed to link:\n" + program_info_log(program.id());

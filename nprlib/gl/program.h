@@ -17,6 +17,7 @@ struct ProgramSource {
     const char* name;  // for error messages, e.g. "classic world"
     const char* vertex;
     const char* fragment;
+    const char* geometry = nullptr;  // optional geometry stage (edge quads, fins)
 };
 
 struct ProgramBuild;

@@ -3,6 +3,8 @@
 #include <memory>
 #include <string>
 
+#include "abi/plugin_entry.h"
+#include "abi/plugin_instances.h"
 #include "classic/classic_renderer.h"
 #include "nqr_renderer.h"
 
@@ -10,25 +12,41 @@ namespace {
 
 using nq::npr::classic::ClassicRenderer;
 
-// The plugin's only state; created in init, destroyed in shutdown.
-std::unique_ptr<ClassicRenderer> g_renderer;
+// The plugin's state: one renderer per init, retired by shutdown (see plugin_instances.h).
+nq::npr::PluginInstances<ClassicRenderer> g_renderers;
 
 int classic_init(const nqr_engine* engine) {
     auto renderer = std::make_unique<ClassicRenderer>();
     std::string error;
     if (!renderer->init(engine, &error)) return 1;  // init() logged why
-    g_renderer = std::move(renderer);
+    g_renderers.add(std::move(renderer));
     return 0;
 }
 
-void classic_shutdown() { g_renderer.reset(); }
-void classic_register(const nqr_model* m) { g_renderer->register_model(m); }
-void classic_release(nqr_model_id id) { g_renderer->release_model(id); }
-void classic_world(const nqr_frame* f) { g_renderer->draw_world(f); }
-void classic_brush(const nqr_frame* f) { g_renderer->draw_brush_entities(f); }
-void classic_alias(const nqr_frame* f) { g_renderer->draw_alias_entities(f); }
-void classic_sprites(const nqr_frame* f) { g_renderer->draw_sprite_entities(f); }
-void classic_particles(const nqr_frame* f) { g_renderer->draw_particles(f); }
+void classic_shutdown() {
+    g_renderers.retire_oldest();
+}
+void classic_register(const nqr_model* m) {
+    g_renderers.current().register_model(m);
+}
+void classic_release(nqr_model_id id) {
+    g_renderers.current().release_model(id);
+}
+void classic_world(const nqr_frame* f) {
+    g_renderers.current().draw_world(f);
+}
+void classic_brush(const nqr_frame* f) {
+    g_renderers.current().draw_brush_entities(f);
+}
+void classic_alias(const nqr_frame* f) {
+    g_renderers.current().draw_alias_entities(f);
+}
+void classic_sprites(const nqr_frame* f) {
+    g_renderers.current().draw_sprite_entities(f);
+}
+void classic_particles(const nqr_frame* f) {
+    g_renderers.current().draw_particles(f);
+}
 
 const nqr_renderer kTable = {
     sizeof(nqr_renderer),
@@ -54,9 +72,5 @@ const nqr_renderer kTable = {
 
 extern "C" NQR_EXPORT const nqr_renderer* nqr_get_renderer(uint32_t engine_abi_version,
                                                            const nqr_engine* engine) {
-    if (NQR_ABI_MAJOR(engine_abi_version) != NQR_ABI_VERSION_MAJOR || !engine ||
-        engine->size < sizeof(nqr_engine)) {
-        return nullptr;
-    }
-    return &kTable;
+    return nq::npr::engine_abi_compatible(engine_abi_version, engine) ? &kTable : nullptr;
 }

@@ -1,6 +1,7 @@
 // Fuzz target for demos: the container, every block through the message decoder (carrying the
-// protocol state as a player would), the summary, and a round-trip oracle: whatever decoded
-// and then encoded must decode again to the very same messages.
+// protocol state as a player would), the summary, and two oracles: whatever decoded and then
+// encoded must decode again to the very same messages, and the reusing decoder the demo player
+// runs must agree with the one-shot decoder, errors included.
 #include <algorithm>
 #include <cstdlib>
 #include <variant>
@@ -22,6 +23,39 @@ void check_round_trip(const std::vector<uint8_t>& bytes, nq::protocol::ProtocolS
     }
 }
 
+// One block through both decoders: the same state, messages, warnings, or the same error.
+// Returns false after an error (the player stops there).
+bool same_decoding(nq::ServerMessageDecoder& decoder, const nq::DemoBlock& block, size_t index,
+                   nq::protocol::ProtocolState& reused, nq::protocol::ProtocolState& one_shot) {
+    auto error = decoder.decode(block.message, index, block.message_offset(), reused);
+    auto expected = nq::decode_server_message(
+        block.message, {"fuzz.dem", index, block.message_offset()}, one_shot);
+    if (!(reused == one_shot)) std::abort();
+    if (!expected) {
+        if (!error || error->to_string() != expected.error().to_string()) std::abort();
+        return false;
+    }
+    const nq::DecodedBlock& got = decoder.block();
+    if (error || got.warnings != expected->warnings) std::abort();
+    if (got.messages.size() != expected->messages.size()) std::abort();
+    for (size_t i = 0; i < got.messages.size(); ++i) {
+        const nq::DecodedMessage& a = got.messages[i];
+        const nq::DecodedMessage& b = expected->messages[i];
+        if (!(a.message == b.message) || a.offset != b.offset || a.size != b.size) std::abort();
+    }
+    return true;
+}
+
+// The player's reusing decoder over the first blocks (the later ones cost time, not coverage).
+void check_reusing_decoder(const nq::Demo& demo) {
+    nq::ServerMessageDecoder decoder("fuzz.dem");
+    nq::protocol::ProtocolState reused, one_shot;
+    const size_t blocks = std::min<size_t>(demo.blocks.size(), 256);
+    for (size_t b = 0; b < blocks; ++b) {
+        if (!same_decoding(decoder, demo.blocks[b], b, reused, one_shot)) return;
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
@@ -30,6 +64,7 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    if (auto demo = nq::parse_dem({data, size}, "fuzz.dem")) check_reusing_decoder(demo.value());
     auto decoded = nq::decode_demo({data, size}, "fuzz.dem");
     if (!decoded) return 0;
     nq::protocol::ProtocolState state;

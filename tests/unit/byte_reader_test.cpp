@@ -58,6 +58,24 @@ TEST(ByteReader, ReadPastEndNamesFileAndAbsoluteOffset) {
     }
 }
 
+TEST(ByteReader, RestartReadsNewDataFromItsStartUnderTheSameName) {
+    auto first = bytes({1, 2, 3});
+    auto second = bytes({0x34, 0x12});
+    ByteReader r(first, "demos/a_long_demo_name.dem", 100);
+    r.u16();
+    r.restart(second, 500);
+    EXPECT_EQ(r.tell(), 0u);
+    EXPECT_EQ(r.size(), 2u);
+    EXPECT_EQ(r.u16(), 0x1234);
+    try {
+        r.u8();
+        FAIL() << "read past the new data's end accepted";
+    } catch (const FormatError& e) {
+        EXPECT_EQ(e.error().file, "demos/a_long_demo_name.dem");
+        EXPECT_EQ(e.error().offset, 502u);  // the new base + 2 bytes read
+    }
+}
+
 TEST(ByteReader, SubRangeOutsideDataIsRefused) {
     auto data = bytes({1, 2, 3, 4});
     ByteReader r(data, "f");

@@ -1,7 +1,8 @@
 // The per-frame client work allocates nothing in steady state: preparing the frame
 // (interpolation, effects, particles, lights, beams), the view, the visible-entity list and
 // the export to the renderer ABI. Counted by replacing the global operator new in this test
-// binary. (Reading demo blocks is not part of it: the decoder returns fresh vectors.)
+// binary. (Reading demo blocks is counted with the engine's demo path in
+// engine_demo_alloc_test.)
 #include <gtest/gtest.h>
 
 #include <atomic>

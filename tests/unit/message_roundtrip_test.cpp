@@ -236,6 +236,49 @@ TEST(MessageWire, ServerInfoAndVersionSwitchTheDecoder) {
     EXPECT_EQ(v.protocol, kFitzQuake);
 }
 
+// ---- the reusing decoder ---------------------------------------------------------------------
+
+// ServerMessageDecoder gives what decode_server_message gives, block after block: the same
+// messages, warnings, protocol state and errors (a failed block in between changes nothing for
+// the next), while keeping its message storage from block to block.
+TEST(ServerMessageDecoder, MatchesTheOneShotDecoderBlockAfterBlock) {
+    const std::string file = "demos/a_name_longer_than_inline_storage.dem";
+    ProtocolState encoder_state;
+    Bytes every_kind =
+        encode(test::every_message_kind(ProtocolState{kFitzQuake, 0}), encoder_state);
+    Bytes truncated_damage{19, 1};  // svc_damage cut after its first byte
+    Bytes two_times = encode({svc::Time{1.5f}, svc::Time{2.0f}}, encoder_state);
+    const std::vector<Bytes> blocks = {every_kind, truncated_damage, two_times, every_kind};
+
+    ServerMessageDecoder decoder(file);
+    ProtocolState reused_state, one_shot_state;
+    const ServerMessage* storage = nullptr;
+    for (size_t i = 0; i < blocks.size(); ++i) {
+        SCOPED_TRACE("block " + std::to_string(i));
+        const uint64_t offset = 1000 * i;
+        auto error = decoder.decode(blocks[i], i, offset, reused_state);
+        auto expected = decode_server_message(blocks[i], {file, i, offset}, one_shot_state);
+        EXPECT_EQ(reused_state, one_shot_state);
+        if (!expected) {
+            ASSERT_TRUE(error.has_value());
+            EXPECT_EQ(error->to_string(), expected.error().to_string());
+            continue;
+        }
+        ASSERT_FALSE(error.has_value()) << error->to_string();
+        const DecodedBlock& got = decoder.block();
+        EXPECT_EQ(got.warnings, expected->warnings);
+        ASSERT_EQ(got.messages.size(), expected->messages.size());
+        for (size_t m = 0; m < got.messages.size(); ++m) {
+            EXPECT_TRUE(got.messages[m].message == expected->messages[m].message) << m;
+            EXPECT_EQ(got.messages[m].offset, expected->messages[m].offset);
+            EXPECT_EQ(got.messages[m].size, expected->messages[m].size);
+        }
+        // The first block is the largest: every later one fits the storage it left.
+        if (!storage) storage = &got.messages.front().message;
+        EXPECT_EQ(&got.messages.front().message, storage);
+    }
+}
+
 // ---- encoder refusals ------------------------------------------------------------------------
 
 std::string encode_error(const ServerMessage& m, ProtocolState s) {

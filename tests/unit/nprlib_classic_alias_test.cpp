@@ -131,17 +131,11 @@ nqr_camera side_camera() {
     return make_camera({-64.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f});
 }
 
-class ClassicAliasTest : public ::testing::Test {
+class ClassicAliasTest : public GlSuiteTest<ClassicAliasTest> {
   protected:
-    static void SetUpTestSuite() { gl_ = new GlTestContext(); }
-    static void TearDownTestSuite() {
-        delete gl_;
-        gl_ = nullptr;
-    }
-
     void SetUp() override {
-        ASSERT_TRUE(gl_->ok()) << gl_->error();
-        gl_->bind();
+        GlSuiteTest::SetUp();
+        if (HasFatalFailure()) return;
         std::string error;
         ASSERT_TRUE(renderer_.init(&engine_.engine, &error)) << error;
     }
@@ -176,12 +170,9 @@ class ClassicAliasTest : public ::testing::Test {
 
     Rgb colour(int index) const { return palette_colour(engine_.palette, index); }
 
-    static GlTestContext* gl_;
     TestEngine engine_;
     ClassicRenderer renderer_;
 };
-
-GlTestContext* ClassicAliasTest::gl_ = nullptr;
 
 // Pixel bounds of the projected corners of the box [lo, hi].
 Coverage projected_box(const nqr_camera& camera, glm::vec3 lo, glm::vec3 hi) {

@@ -62,23 +62,15 @@ namespace {
 
 using classic::ClassicRenderer;
 
-class ClassicLifecycleTest : public ::testing::Test {
+class ClassicLifecycleTest : public GlSuiteTest<ClassicLifecycleTest> {
   protected:
-    static void SetUpTestSuite() { gl_ = new GlTestContext(); }
-    static void TearDownTestSuite() {
-        delete gl_;
-        gl_ = nullptr;
-    }
     void SetUp() override {
-        ASSERT_TRUE(gl_->ok()) << gl_->error();
-        gl_->bind();
+        GlSuiteTest::SetUp();
+        if (HasFatalFailure()) return;
     }
 
-    static GlTestContext* gl_;
     TestEngine engine_;
 };
-
-GlTestContext* ClassicLifecycleTest::gl_ = nullptr;
 
 // Every kind of model and drawing at once: world (lit, fullbright, sky, liquid, animated),
 // a brush entity, a translated player, a sprite, particles and a moving dynamic light.

@@ -30,17 +30,11 @@ std::vector<uint8_t> read_or_fail(const std::string& path) {
     return std::move(*bytes);
 }
 
-class ClassicRealDataTest : public ::testing::Test {
+class ClassicRealDataTest : public GlSuiteTest<ClassicRealDataTest> {
   protected:
-    static void SetUpTestSuite() { gl_ = new GlTestContext(); }
-    static void TearDownTestSuite() {
-        delete gl_;
-        gl_ = nullptr;
-    }
-
     void SetUp() override {
-        ASSERT_TRUE(gl_->ok()) << gl_->error();
-        gl_->bind();
+        GlSuiteTest::SetUp();
+        if (HasFatalFailure()) return;
         const std::string path = nq::test::lq1_dir() + "/gfx/palette.lmp";
         auto palette = nq::parse_palette(read_or_fail(path), path);
         ASSERT_TRUE(palette) << path;
@@ -58,12 +52,9 @@ class ClassicRealDataTest : public ::testing::Test {
         EXPECT_EQ(renderer_.live_gl_objects(), 0);
     }
 
-    static GlTestContext* gl_;
     TestEngine engine_;
     ClassicRenderer renderer_;
 };
-
-GlTestContext* ClassicRealDataTest::gl_ = nullptr;
 
 TEST_F(ClassicRealDataTest, EveryMapDrawsALitSceneFromItsPlayerStart) {
     int maps = 0;

@@ -76,16 +76,11 @@ TEST(SpriteAxes, QuakeAngleVectorsAtZeroAreForwardXRightMinusYUpZ) {
 
 // ------------------------------------------------------------------ GPU
 
-class ClassicSpriteParticleTest : public ::testing::Test {
+class ClassicSpriteParticleTest : public GlSuiteTest<ClassicSpriteParticleTest> {
   protected:
-    static void SetUpTestSuite() { gl_ = new GlTestContext(); }
-    static void TearDownTestSuite() {
-        delete gl_;
-        gl_ = nullptr;
-    }
     void SetUp() override {
-        ASSERT_TRUE(gl_->ok()) << gl_->error();
-        gl_->bind();
+        GlSuiteTest::SetUp();
+        if (HasFatalFailure()) return;
         std::string error;
         ASSERT_TRUE(renderer_.init(&engine_.engine, &error)) << error;
     }
@@ -110,12 +105,9 @@ class ClassicSpriteParticleTest : public ::testing::Test {
 
     Rgb colour(int index) const { return palette_colour(engine_.palette, index); }
 
-    static GlTestContext* gl_;
     TestEngine engine_;
     ClassicRenderer renderer_;
 };
-
-GlTestContext* ClassicSpriteParticleTest::gl_ = nullptr;
 
 nqr_camera front_camera(float distance = 64.0f, float fov = 90.0f) {
     return make_camera({-distance, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, fov);

@@ -40,17 +40,11 @@ std::vector<uint8_t> uniform_image(int size, uint8_t index) {
     return make_image(size, size, [&](int, int) { return index; });
 }
 
-class ClassicWorldTest : public ::testing::Test {
+class ClassicWorldTest : public GlSuiteTest<ClassicWorldTest> {
   protected:
-    static void SetUpTestSuite() { gl_ = new GlTestContext(); }
-    static void TearDownTestSuite() {
-        delete gl_;
-        gl_ = nullptr;
-    }
-
     void SetUp() override {
-        ASSERT_TRUE(gl_->ok()) << gl_->error();
-        gl_->bind();
+        GlSuiteTest::SetUp();
+        if (HasFatalFailure()) return;
         std::string error;
         ASSERT_TRUE(renderer_.init(&engine_.engine, &error)) << error;
     }
@@ -78,12 +72,9 @@ class ClassicWorldTest : public ::testing::Test {
 
     Rgb colour(int index) const { return palette_colour(engine_.palette, index); }
 
-    static GlTestContext* gl_;
     TestEngine engine_;
     ClassicRenderer renderer_;
 };
-
-GlTestContext* ClassicWorldTest::gl_ = nullptr;
 
 TEST_F(ClassicWorldTest, FloorIsTextureScaledByLightmapWithOverbright) {
     BrushBuilder builder;

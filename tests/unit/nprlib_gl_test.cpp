@@ -71,24 +71,15 @@ TEST(PaletteImage, TransparentTexelsTakeTheirOpaqueNeighboursColour) {
 
 // ------------------------------------------------------------------ GL
 
-class GlHelpersTest : public ::testing::Test {
+class GlHelpersTest : public GlSuiteTest<GlHelpersTest> {
   protected:
-    static void SetUpTestSuite() { gl_ = new GlTestContext(); }
-    static void TearDownTestSuite() {
-        delete gl_;
-        gl_ = nullptr;
-    }
-    void SetUp() override { ASSERT_TRUE(gl_->ok()) << gl_->error(); }
     void TearDown() override {
         EXPECT_EQ(tracker_.total_live(), 0);
         EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     }
 
-    static GlTestContext* gl_;
     ObjectTracker tracker_;
 };
-
-GlTestContext* GlHelpersTest::gl_ = nullptr;
 
 constexpr const char* kVertex = R"(#version 330 core
 layout(location = 0) in vec3 a_position;

@@ -159,11 +159,12 @@ class GlTestContext {
         glBindTexture(GL_TEXTURE_2D, 0);
         glGenRenderbuffers(1, &depth_);
         glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kSize, kSize);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, kSize, kSize);
         glGenFramebuffers(1, &framebuffer_);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  depth_);
         if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
             error_ = "test framebuffer incomplete";
         }
@@ -173,6 +174,25 @@ class GlTestContext {
     SDL_Window* window_ = nullptr;
     SDL_GLContext context_ = nullptr;
     GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0;
+};
+
+// A fixture base with one GL context per test suite (contexts are slow to make under ASan),
+// checked and bound before every test: class MyTest : public GlSuiteTest<MyTest> { ... }.
+// A derived SetUp() calls GlSuiteTest::SetUp() first and returns on HasFatalFailure().
+template <class Suite>
+class GlSuiteTest : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { gl_ = new GlTestContext(); }
+    static void TearDownTestSuite() {
+        delete gl_;
+        gl_ = nullptr;
+    }
+    void SetUp() override {
+        ASSERT_TRUE(gl_->ok()) << gl_->error();
+        gl_->bind();
+    }
+
+    static inline GlTestContext* gl_ = nullptr;
 };
 
 // ------------------------------------------------------------------ palette

@@ -21,6 +21,16 @@ void* operator new[](std::size_t n) {
     if (void* p = std::malloc(n ? n : 1)) return p;
     throw std::bad_alloc();
 }
+// The nothrow forms too (std::stable_sort's buffer, LLVM inside Mesa): their memory comes back
+// through the plain operator delete below, so it must come from malloc as well.
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+    ++nq::render_test::g_allocations;
+    return std::malloc(n ? n : 1);
+}
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+    ++nq::render_test::g_allocations;
+    return std::malloc(n ? n : 1);
+}
 void operator delete(void* p) noexcept {
     std::free(p);
 }

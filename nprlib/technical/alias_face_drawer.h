@@ -1,0 +1,38 @@
+// Draws the faces of alias models (MDL) in the technical style: technical_shade() per pixel
+// (shading_glsl.h: Gooch 98 cool-to-warm, splash-back, metal or classic per settings.mode) on
+// k_d = surface_kd() of the skin, lit from the entity's sampled light direction. Everything else
+// as the classic drawer does it: pose blending, fullbright skin pixels added unlit, holey models
+// cut out, Quake's clockwise winding culled, alpha < 1 blended without depth writes, view-space
+// normals written to location 1 for G-buffer consumers.
+#pragma once
+
+#include <string>
+
+#include "classic/alias_model_gpu.h"
+#include "classic/frame_view.h"
+#include "gl/program.h"
+#include "nqr_renderer.h"
+#include "technical/technical_settings.h"
+
+namespace nq::npr::technical {
+
+class AliasFaceDrawer {
+  public:
+    bool init(gl::ObjectTracker* tracker, std::string& error);
+    void reset();
+
+    // One entity's faces. The caller sets the depth range (view model) and the pass order;
+    // starts from and restores the classic drawers' state. fullbright_texture 0: none.
+    // Metal bands run across the model-space height (z).
+    void draw_entity(const classic::FrameView& view, const nqr_entity& entity,
+                     const classic::AliasModelGpu& model, GLuint skin_texture,
+                     GLuint fullbright_texture, const ShadingSettings& settings);
+
+  private:
+    void set_light_direction(const nqr_entity& entity);
+
+    gl::Program program_;
+    gl::Texture black_;
+};
+
+}  // namespace nq::npr::technical

@@ -1,0 +1,80 @@
+#include "technical/technical_models.h"
+
+#include <algorithm>
+
+#include "classic/abi_access.h"
+
+namespace nq::npr::technical {
+
+using classic::has_known_prefix;
+
+void TechnicalModels::init(gl::ObjectTracker* tracker, const uint8_t* palette_rgb, Logger log) {
+    clear();
+    tracker_ = tracker;
+    palette_ = palette_rgb;
+    log_ = std::move(log);
+}
+
+void TechnicalModels::add(const nqr_model& model) {
+    remove(model.id);
+    TechnicalModel entry;
+    entry.radius = model.radius;
+    if (model.kind == NQR_MODEL_ALIAS && has_known_prefix(model.alias)) add_alias(model, entry);
+    if (model.kind == NQR_MODEL_BRUSH && has_known_prefix(model.brush)) add_brush(model, entry);
+    models_.emplace(model.id, std::move(entry));
+}
+
+void TechnicalModels::add_alias(const nqr_model& model, TechnicalModel& out) {
+    const std::string name = model.name ? model.name : "?";
+    std::string error;
+    out.alias_edges = AliasEdgeMesh::create(tracker_, *model.alias, error);
+    if (!out.alias_edges) {
+        log_(NQR_LOG_WARNING, "technical: " + name + ": no edges: " + error);
+        return;
+    }
+    log_(NQR_LOG_DEBUG, out.alias_edges->verdict_line(name));
+}
+
+void TechnicalModels::add_brush(const nqr_model& model, TechnicalModel& out) {
+    const nqr_brush_model* brush = model.brush;
+    SharedBrush& shared = brushes_[brush];
+    if (!shared.mesh) {
+        std::string error;
+        shared.mesh = BrushEdgeMesh::create(tracker_, *brush, error, palette_);
+        if (!shared.mesh) {
+            brushes_.erase(brush);
+            log_(NQR_LOG_WARNING, std::string("technical: ") + (model.name ? model.name : "?") +
+                                      ": no brush edges: " + error);
+            return;
+        }
+    }
+    ++shared.users;
+    brush_of_[model.id] = brush;
+    out.brush_edges = shared.mesh.get();
+    const uint32_t total = brush->num_surfaces;
+    out.first_surface = std::min(model.first_surface, total);
+    out.num_surfaces = std::min(model.num_surfaces, total - out.first_surface);
+}
+
+void TechnicalModels::remove(nqr_model_id id) {
+    auto brush = brush_of_.find(id);
+    if (brush != brush_of_.end()) {
+        auto shared = brushes_.find(brush->second);
+        if (shared != brushes_.end() && --shared->second.users <= 0) brushes_.erase(shared);
+        brush_of_.erase(brush);
+    }
+    models_.erase(id);
+}
+
+void TechnicalModels::clear() {
+    models_.clear();
+    brush_of_.clear();
+    brushes_.clear();
+}
+
+const TechnicalModel* TechnicalModels::find(nqr_model_id id) const {
+    auto it = models_.find(id);
+    return it == models_.end() ? nullptr : &it->second;
+}
+
+}  // namespace nq::npr::technical

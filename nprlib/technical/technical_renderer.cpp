@@ -1,0 +1,260 @@
+#include "technical/technical_renderer.h"
+
+#include <epoxy/gl.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "classic/abi_access.h"
+#include "classic/frame_view.h"
+#include "gl/texture_upload.h"
+#include "technical/planar_shadow.h"
+
+namespace nq::npr::technical {
+
+using classic::has_known_prefix;
+
+struct TechnicalRenderer::AliasItem {
+    const nqr_entity* entity = nullptr;
+    const classic::AliasModelGpu* gpu = nullptr;
+    const classic::SkinImageGpu* image = nullptr;
+    const AliasEdgeMesh* edges = nullptr;
+    float radius = 0;
+};
+
+namespace {
+
+bool is_view_model(const nqr_entity& entity) {
+    return (entity.flags & NQR_ENTITY_VIEWMODEL) != 0;
+}
+
+bool in_pass(const nqr_entity& entity, int pass) {
+    const bool translucent = classic::entity_alpha(entity.alpha) < 1.0f;
+    if (pass == 2) return is_view_model(entity);
+    return !is_view_model(entity) && translucent == (pass == 1);
+}
+
+EdgeFrameUniforms edge_frame_uniforms(const nqr_frame& frame) {
+    EdgeFrameUniforms out;
+    out.projection = classic::mat4_from(frame.camera.projection);
+    out.viewport = {static_cast<float>(frame.camera.viewport[2]),
+                    static_cast<float>(frame.camera.viewport[3])};
+    out.z_near = frame.camera.z_near;
+    return out;
+}
+
+constexpr double kViewModelDepthMax = 0.3;  // GLQuake's depth-range hack, as classic
+
+}  // namespace
+
+void TechnicalRenderer::log(int level, const std::string& text) const {
+    if (engine_ && engine_->log) engine_->log(level, text.c_str());
+}
+
+bool TechnicalRenderer::fail(const std::string& message, std::string* error) {
+    log(NQR_LOG_ERROR, "technical renderer: " + message);
+    if (error) *error = message;
+    shutdown();
+    return false;
+}
+
+bool TechnicalRenderer::init(const nqr_engine* engine, std::string* error) {
+    shutdown();
+    if (!has_known_prefix(engine)) return fail("engine services struct missing or too old", error);
+    engine_ = engine;
+    std::string message;
+    if (!classic_.init(engine, &message)) return fail(message, error);
+    models_.init(&tracker_, classic_.palette(),
+                 [this](int level, const std::string& text) { log(level, text); });
+    if (!faces_.init(&tracker_, message) || !alias_edges_.init(&tracker_, message) ||
+        !brush_edges_.init(&tracker_, message) || !shadows_.init(&tracker_, message)) {
+        return fail(message, error);
+    }
+    black_ = gl::create_solid_texture(&tracker_, 0, 0, 0, 0);
+    initialised_ = true;
+    return true;
+}
+
+void TechnicalRenderer::shutdown() {
+    models_.clear();
+    black_.reset();
+    shadows_.reset();
+    brush_edges_.reset();
+    alias_edges_.reset();
+    faces_.reset();
+    classic_.shutdown();
+    initialised_ = false;
+}
+
+void TechnicalRenderer::register_model(const nqr_model* model) {
+    if (!initialised_ || !model) return;
+    classic_.register_model(model);
+    models_.add(*model);
+}
+
+void TechnicalRenderer::release_model(nqr_model_id id) {
+    classic_.release_model(id);
+    models_.remove(id);
+}
+
+void TechnicalRenderer::pass_begin(const char* name) const {
+    if (engine_->gpu_pass_begin) engine_->gpu_pass_begin(name);
+}
+
+void TechnicalRenderer::pass_end() const {
+    if (engine_->gpu_pass_end) engine_->gpu_pass_end();
+}
+
+// ------------------------------------------------------------------ brush geometry
+
+void TechnicalRenderer::draw_world(const nqr_frame* frame) {
+    classic_.draw_world(frame);
+    if (!initialised_ || !has_known_prefix(frame) || !settings.edges.world_edges) return;
+    const TechnicalModel* world = models_.find(frame->world);
+    classic::FrameView view;
+    if (!world || !world->brush_edges || !classic::read_frame_view(frame, view)) return;
+    pass_begin("edges");
+    classic::begin_classic_pass();
+    brush_edges_.draw_world(view, edge_frame_uniforms(*frame), *frame, *world->brush_edges,
+                            settings.edges);
+    classic::end_classic_pass();
+    pass_end();
+}
+
+void TechnicalRenderer::draw_brush_entities(const nqr_frame* frame) {
+    classic_.draw_brush_entities(frame);
+    if (!initialised_ || !has_known_prefix(frame) || !settings.edges.world_edges) return;
+    classic::FrameView view;
+    if (!frame->brush_entities || !classic::read_frame_view(frame, view)) return;
+    pass_begin("edges");
+    classic::begin_classic_pass();
+    draw_brush_entity_edges(*frame, view);
+    classic::end_classic_pass();
+    pass_end();
+}
+
+void TechnicalRenderer::draw_brush_entity_edges(const nqr_frame& frame,
+                                                const classic::FrameView& view) {
+    const EdgeFrameUniforms uniforms = edge_frame_uniforms(frame);
+    for (uint32_t i = 0; i < frame.num_brush_entities; ++i) {
+        const nqr_entity* entity = frame.brush_entities[i];
+        if (!has_known_prefix(entity) || entity->model == frame.world) continue;
+        const TechnicalModel* model = models_.find(entity->model);
+        if (!model || !model->brush_edges) continue;
+        brush_edges_.draw_entity(view, uniforms, *entity, *model->brush_edges, model->first_surface,
+                                 model->num_surfaces, settings.edges);
+    }
+}
+
+// ------------------------------------------------------------------ alias models
+
+bool TechnicalRenderer::find_alias(const nqr_frame& frame, const nqr_entity* entity,
+                                   AliasItem& out) {
+    (void)frame;
+    if (!has_known_prefix(entity)) return false;
+    const classic::RegisteredModel* registered = classic_.models().find(entity->model);
+    if (!registered || !registered->alias) return false;
+    out.entity = entity;
+    out.gpu = registered->alias.get();
+    out.image = out.gpu->skin_image(entity->skin, entity->skin_image);
+    if (!out.image) return false;
+    const TechnicalModel* model = models_.find(entity->model);
+    out.edges = model ? model->alias_edges.get() : nullptr;
+    out.radius = model ? model->radius : 0.0f;
+    return true;
+}
+
+void TechnicalRenderer::draw_alias_entities(const nqr_frame* frame) {
+    classic::FrameView view;
+    if (!initialised_ || !has_known_prefix(frame) || !frame->alias_entities ||
+        !classic::read_frame_view(frame, view)) {
+        return;
+    }
+    classic::begin_classic_pass();
+    if (settings.shadows.enabled) {
+        pass_begin("shadows");
+        draw_shadows(*frame, view);
+        pass_end();
+    }
+    for (AliasPass pass : {AliasPass::opaque, AliasPass::translucent, AliasPass::view_model}) {
+        if (pass == AliasPass::view_model) glDepthRange(0.0, kViewModelDepthMax);
+        pass_begin("shading");
+        draw_faces(*frame, view, pass);
+        pass_end();
+        pass_begin("edges");
+        draw_alias_edges(*frame, view, pass);
+        pass_end();
+    }
+    classic::end_classic_pass();
+}
+
+// Shadows fade out over the last quarter of tech_shadow_distance instead of popping away.
+float TechnicalRenderer::shadow_distance_fade(float distance) const {
+    const float far = settings.shadows.max_distance;
+    if (far <= 0.0f) return 0.0f;
+    return glm::clamp((far - distance) / (0.25f * far), 0.0f, 1.0f);
+}
+
+void TechnicalRenderer::draw_shadows(const nqr_frame& frame, const classic::FrameView& view) {
+    shadows_.begin_frame();
+    for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
+        AliasItem item;
+        if (!find_alias(frame, frame.alias_entities[i], item) ||
+            !in_pass(*item.entity, static_cast<int>(AliasPass::opaque))) {
+            continue;
+        }
+        const glm::vec3 origin = glm::make_vec3(item.entity->origin);
+        const float fade = shadow_distance_fade(glm::distance(origin, view.eye));
+        if (fade <= 0.0f) continue;
+        const ShadowPlane plane = find_shadow_plane(*engine_, origin, settings.shadows.max_drop);
+        if (!plane.found) continue;
+        ShadowPasses passes = build_shadow_passes(
+            plane, glm::make_vec3(item.entity->light.direction), origin, settings.shadows);
+        for (int p = 0; p < passes.count; ++p) passes.pass[p].alpha *= fade;
+        if (passes.count > 0) {
+            shadows_.draw_entity(view, *item.entity, *item.gpu, passes, settings.shadows);
+        }
+    }
+}
+
+void TechnicalRenderer::draw_faces(const nqr_frame& frame, const classic::FrameView& view,
+                                   AliasPass pass) {
+    for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
+        AliasItem item;
+        if (!find_alias(frame, frame.alias_entities[i], item) ||
+            !in_pass(*item.entity, static_cast<int>(pass))) {
+            continue;
+        }
+        const GLuint skin =
+            classic_.alias_drawer().skin_texture(frame, *item.entity, *item.gpu, *item.image);
+        const GLuint fullbright =
+            item.image->fullbright ? item.image->fullbright.id() : black_.id();
+        faces_.draw_entity(view, *item.entity, *item.gpu, skin, fullbright, settings.shading);
+    }
+}
+
+// Past the blend threshold an edge has taken the model's colour: drawing it changes nothing.
+bool TechnicalRenderer::edges_fully_faded(const AliasItem& item,
+                                          const classic::FrameView& view) const {
+    if (!settings.edges.distance_fade) return false;
+    const float distance = glm::distance(glm::make_vec3(item.entity->origin), view.eye);
+    return distance - item.radius > settings.edges.fade_distance;
+}
+
+void TechnicalRenderer::draw_alias_edges(const nqr_frame& frame, const classic::FrameView& view,
+                                         AliasPass pass) {
+    const EdgeFrameUniforms uniforms = edge_frame_uniforms(frame);
+    for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
+        AliasItem item;
+        if (!find_alias(frame, frame.alias_entities[i], item) || !item.edges ||
+            !in_pass(*item.entity, static_cast<int>(pass)) || edges_fully_faded(item, view)) {
+            continue;
+        }
+        const GLuint skin =
+            classic_.alias_drawer().skin_texture(frame, *item.entity, *item.gpu, *item.image);
+        alias_edges_.draw_entity(view, uniforms, *item.entity, *item.gpu, *item.edges, skin,
+                                 settings);
+    }
+}
+
+}  // namespace nq::npr::technical

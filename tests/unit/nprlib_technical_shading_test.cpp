@@ -1,0 +1,400 @@
+// The technical style's face shading of alias models (nprlib/technical/alias_face_drawer): Gooch
+// 98 cool-to-warm tones, splash-back, the skin-average/texel blend, metal bands and classic
+// lighting, each checked on real pixels of synthetic models (Mesa llvmpipe) against the formula
+// recomputed here; plus the classic drawer's duties (fullbright, holes, alpha, normals).
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "classic/alias_model_gpu.h"
+#include "classic/frame_view.h"
+#include "nprlib_test_support.h"
+#include "technical/alias_face_drawer.h"
+#include "technical/technical_settings.h"
+
+namespace nq::npr::test {
+namespace {
+
+using technical::AliasFaceDrawer;
+using technical::ShadingMode;
+using technical::ShadingSettings;
+
+constexpr uint8_t kGrey = 150;  // palette index of (150, 150, 150)
+constexpr float kSphereRadius = 30.0f;
+const Rgb kBackground{10, 20, 30};
+
+// ------------------------------------------------------------------ synthetic models
+
+// Adds triangle (a, b, c) of pose 0 wound clockwise seen from outside (Quake's order), outside
+// being away from `inside`.
+void add_outward_triangle(AliasBuilder& b, glm::vec3 inside, int i0, int i1, int i2) {
+    auto position = [&](int i) {
+        const auto& v = b.poses[0][i];
+        return glm::vec3(v[0], v[1], v[2]) * b.scale + b.origin;
+    };
+    const glm::vec3 p0 = position(i0), p1 = position(i1), p2 = position(i2);
+    const glm::vec3 counter_clockwise_normal = glm::cross(p1 - p0, p2 - p0);
+    const bool outward = glm::dot(counter_clockwise_normal, (p0 + p1 + p2) / 3.0f - inside) > 0;
+    if (outward) {
+        b.triangles.push_back({1, i0, i2, i1});
+    } else {
+        b.triangles.push_back({1, i0, i1, i2});
+    }
+}
+
+int add_vertex(AliasBuilder& b, glm::vec3 model_position, glm::ivec2 st) {
+    if (b.poses.empty()) b.poses.emplace_back();
+    const glm::ivec3 packed = glm::ivec3(glm::round((model_position - b.origin) / b.scale));
+    b.poses[0].push_back({static_cast<uint8_t>(packed.x), static_cast<uint8_t>(packed.y),
+                          static_cast<uint8_t>(packed.z)});
+    b.st.push_back({0, st.x, st.y});
+    return static_cast<int>(b.poses[0].size() - 1);
+}
+
+// A sphere of kSphereRadius around the model origin with its poles on the X axis (the -X pole
+// faces a camera on -X), every vertex at skin texel `st`.
+void make_sphere(AliasBuilder& b, glm::ivec2 st, int stacks = 16, int slices = 24) {
+    b.scale = glm::vec3(0.25f);
+    b.origin = glm::vec3(-32.0f);
+    const float pi = std::numbers::pi_v<float>;
+    const int near_pole = add_vertex(b, {-kSphereRadius, 0, 0}, st);
+    for (int i = 1; i < stacks; ++i) {
+        const float theta = pi * i / stacks;
+        for (int j = 0; j < slices; ++j) {
+            const float phi = 2.0f * pi * j / slices;
+            const float ring = kSphereRadius * std::sin(theta);
+            add_vertex(
+                b, {-kSphereRadius * std::cos(theta), ring * std::cos(phi), ring * std::sin(phi)},
+                st);
+        }
+    }
+    const int far_pole = add_vertex(b, {kSphereRadius, 0, 0}, st);
+    auto ring_vertex = [&](int i, int j) { return 1 + (i - 1) * slices + j % slices; };
+    const glm::vec3 centre(0.0f);
+    for (int j = 0; j < slices; ++j) {
+        add_outward_triangle(b, centre, near_pole, ring_vertex(1, j), ring_vertex(1, j + 1));
+        add_outward_triangle(b, centre, far_pole, ring_vertex(stacks - 1, j),
+                             ring_vertex(stacks - 1, j + 1));
+        for (int i = 1; i + 1 < stacks; ++i) {
+            add_outward_triangle(b, centre, ring_vertex(i, j), ring_vertex(i + 1, j),
+                                 ring_vertex(i + 1, j + 1));
+            add_outward_triangle(b, centre, ring_vertex(i, j), ring_vertex(i + 1, j + 1),
+                                 ring_vertex(i, j + 1));
+        }
+    }
+}
+
+// ------------------------------------------------------------------ expected colours
+
+glm::vec3 palette_rgb(int index) {
+    const Rgb c = palette_colour(make_test_palette(), index);
+    return glm::vec3(c.r, c.g, c.b) / 255.0f;
+}
+
+Rgb to_rgb(glm::vec3 c) {
+    c = glm::clamp(c, 0.0f, 1.0f) * 255.0f;
+    return {static_cast<int>(std::lround(c.r)), static_cast<int>(std::lround(c.g)),
+            static_cast<int>(std::lround(c.b))};
+}
+
+float splashback_factor(float n_dot_l, const ShadingSettings& s) {
+    if (!s.splashback) return 1.0f;
+    const float a = s.splashback_alpha;
+    return std::pow(a * std::abs(n_dot_l) + (1.0f - a), s.splashback_p);
+}
+
+// Gooch 98 with the warm tone on the side facing the light.
+glm::vec3 gooch(glm::vec3 kd, float n_dot_l, const ShadingSettings& s) {
+    const glm::vec3 cool = glm::vec3(0.0f, 0.0f, s.blue) + s.alpha * kd;
+    const glm::vec3 warm = glm::vec3(s.yellow, s.yellow, 0.0f) + s.beta * kd;
+    const float warmth = (1.0f + n_dot_l) / 2.0f;  // 1 facing the light, 0 facing away
+    const glm::vec3 tone = warmth * warm + (1.0f - warmth) * cool;
+    return glm::clamp(tone * splashback_factor(n_dot_l, s), 0.0f, 1.0f);
+}
+
+ShadingSettings gooch_settings(bool splashback) {
+    ShadingSettings s;
+    s.mode = ShadingMode::gooch;
+    s.splashback = splashback;
+    return s;
+}
+
+// ------------------------------------------------------------------ fixture
+
+// From (-60, 0, 0) looking along +X: the sphere's -X pole is at the centre of the image.
+nqr_camera front_camera() {
+    return make_camera({-60.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f});
+}
+
+class TechnicalShadingTest : public GlSuiteTest<TechnicalShadingTest> {
+  protected:
+    void SetUp() override {
+        GlSuiteTest::SetUp();
+        if (HasFatalFailure()) return;
+        std::string error;
+        ASSERT_TRUE(drawer_.init(&tracker_, error)) << error;
+        entity_ = make_entity(1);
+    }
+
+    void TearDown() override {
+        gpu_.reset();
+        drawer_.reset();
+        EXPECT_EQ(tracker_.total_live(), 0);
+    }
+
+    // builder_ outlives the upload: the GPU model keeps pointing at its nqr_alias_model.
+    void upload() {
+        std::string error;
+        gpu_ = classic::AliasModelGpu::create(&tracker_, *builder_.build(), palette_.data(), error);
+        ASSERT_TRUE(gpu_) << error;
+    }
+
+    void upload_sphere(uint8_t skin_index) {
+        make_sphere(builder_, {4, 4});
+        builder_.skin.assign(64, skin_index);
+        upload();
+    }
+
+    // Light from direction `toward_light` (world, need not be unit).
+    void light_from(glm::vec3 toward_light) {
+        const glm::vec3 l = glm::normalize(toward_light);
+        std::copy_n(&l.x, 3, entity_.light.direction);
+    }
+
+    void draw(const ShadingSettings& settings, const nqr_camera& camera = front_camera()) {
+        gl_->clear(kBackground);
+        classic::FrameView view;
+        ASSERT_TRUE(classic::read_frame_view(frame_.build(camera, 0), view));
+        const classic::SkinImageGpu* image = gpu_->skin_image(0, 0);
+        ASSERT_NE(image, nullptr);
+        classic::begin_classic_pass();
+        drawer_.draw_entity(view, entity_, *gpu_, image->base.id(),
+                            image->fullbright ? image->fullbright.id() : 0, settings);
+        EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    }
+
+    // The pixel showing the sphere's near pole (normal -X).
+    Rgb pole_pixel() const {
+        const glm::vec2 p = project(front_camera(), {-kSphereRadius, 0.0f, 0.0f});
+        return gl_->pixel(static_cast<int>(p.x), static_cast<int>(p.y));
+    }
+
+    // The pole pixel with the light at angle n.l = cos(angle) to the pole's normal (-X).
+    Rgb pole_lit_at(float n_dot_l, const ShadingSettings& settings) {
+        const float sine = std::sqrt(std::max(0.0f, 1.0f - n_dot_l * n_dot_l));
+        light_from({-n_dot_l, 0.0f, sine});
+        draw(settings);
+        return pole_pixel();
+    }
+
+    std::array<uint8_t, 768> palette_ = make_test_palette();
+    gl::ObjectTracker tracker_;
+    AliasFaceDrawer drawer_;
+    AliasBuilder builder_;
+    std::unique_ptr<classic::AliasModelGpu> gpu_;
+    nqr_entity entity_{};
+    TestFrame frame_;
+};
+
+constexpr int kTolerance = 4;
+
+#define EXPECT_COLOUR(actual, expected)                                                 \
+    EXPECT_TRUE(near((actual), (expected), kTolerance)) << "drawn " << (actual) << ", " \
+                                                        << "expected " << (expected)
+
+// ------------------------------------------------------------------ Gooch 98
+
+TEST_F(TechnicalShadingTest, GoochIsWarmTowardTheLightAndCoolAway) {
+    upload_sphere(kGrey);
+    const ShadingSettings s = gooch_settings(false);
+    const glm::vec3 kd = palette_rgb(kGrey);
+    const Rgb lit = pole_lit_at(1.0f, s);
+    const Rgb side = pole_lit_at(0.0f, s);
+    const Rgb away = pole_lit_at(-1.0f, s);
+    EXPECT_COLOUR(lit, to_rgb(gooch(kd, 1.0f, s)));
+    EXPECT_COLOUR(side, to_rgb(gooch(kd, 0.0f, s)));
+    EXPECT_COLOUR(away, to_rgb(gooch(kd, -1.0f, s)));
+    EXPECT_GT(lit.r, lit.b + 60);    // yellowish where lit
+    EXPECT_GT(away.b, away.r + 60);  // bluish where not
+}
+
+TEST_F(TechnicalShadingTest, GoochFollowsTheLightAroundTheModel) {
+    // One picture, light from above-left-front: every pixel of the sphere is checked against
+    // the formula with its own normal (the sphere's, from the pixel's ray), inner pixels only.
+    upload_sphere(kGrey);
+    const ShadingSettings s = gooch_settings(true);
+    const glm::vec3 l = glm::normalize(glm::vec3(-1.0f, 1.0f, 1.0f));
+    light_from(l);
+    draw(s);
+    const std::vector<Rgb> image = gl_->pixels();
+    const glm::vec3 kd = palette_rgb(kGrey);
+    const glm::vec3 eye(-60.0f, 0.0f, 0.0f);
+    int checked = 0, wrong = 0;
+    for (int y = 0; y < kSize; y += 3) {
+        for (int x = 0; x < kSize; x += 3) {
+            // Camera ray through the pixel centre (fov 90: ndc = tangent), hit on the sphere.
+            const float ndc_x = (x + 0.5f) / (kSize / 2.0f) - 1.0f;
+            const float ndc_y = (y + 0.5f) / (kSize / 2.0f) - 1.0f;
+            const glm::vec3 ray = glm::normalize(glm::vec3(1.0f, -ndc_x, ndc_y));
+            const float b = glm::dot(eye, ray);
+            const float disc = b * b - (glm::dot(eye, eye) - kSphereRadius * kSphereRadius);
+            if (disc < 0.0f) continue;
+            const glm::vec3 n = glm::normalize(eye + ray * (-b - std::sqrt(disc)));
+            if (-glm::dot(n, ray) < 0.5f) continue;  // near the outline: facets show
+            ++checked;
+            const Rgb expected = to_rgb(gooch(kd, glm::dot(n, l), s));
+            wrong += !near(image[y * kSize + x], expected, 8);
+        }
+    }
+    EXPECT_GT(checked, 150);
+    EXPECT_LE(wrong, checked / 50) << wrong << " of " << checked;
+}
+
+TEST_F(TechnicalShadingTest, SplashBackDarkensTheTerminatorOnly) {
+    upload_sphere(kGrey);
+    const ShadingSettings off = gooch_settings(false), on = gooch_settings(true);
+    const glm::vec3 kd = palette_rgb(kGrey);
+    const Rgb side_off = pole_lit_at(0.0f, off), side_on = pole_lit_at(0.0f, on);
+    EXPECT_COLOUR(side_on, to_rgb(gooch(kd, 0.0f, off) * splashback_factor(0.0f, on)));
+    EXPECT_LT(brightness(side_on), brightness(side_off) * 0.45);
+    // Facing the light or away from it, |cos| = 1: splash-back changes nothing.
+    EXPECT_COLOUR(pole_lit_at(1.0f, on), pole_lit_at(1.0f, off));
+    EXPECT_COLOUR(pole_lit_at(-1.0f, on), pole_lit_at(-1.0f, off));
+    // Halfway, the factor recomputed here.
+    EXPECT_COLOUR(pole_lit_at(-0.5f, on), to_rgb(gooch(kd, -0.5f, on)));
+}
+
+// ------------------------------------------------------------------ k_d
+
+TEST_F(TechnicalShadingTest, TextureBlendGoesFromSkinAverageToTexel) {
+    // Left half red, right half blue; every vertex samples texel (2, 4): red.
+    AliasBuilder& b = builder_;
+    make_sphere(b, {2, 4});
+    b.skin = make_image(8, 8, [](int x, int) { return x < 4 ? colour::kRed : colour::kBlue; });
+    upload();
+    const glm::vec3 red = palette_rgb(colour::kRed), blue = palette_rgb(colour::kBlue);
+    const glm::vec3 average = (red + blue) / 2.0f;
+    for (float blend : {0.0f, 0.5f, 1.0f}) {
+        ShadingSettings s = gooch_settings(false);
+        s.texture_blend = blend;
+        const glm::vec3 kd = average + blend * (red - average);
+        EXPECT_COLOUR(pole_lit_at(1.0f, s), to_rgb(gooch(kd, 1.0f, s))) << "blend " << blend;
+    }
+}
+
+// ------------------------------------------------------------------ metal and classic
+
+TEST_F(TechnicalShadingTest, MetalShowsBandsAcrossTheHeight) {
+    // A tall box (16 x 16 x 96) seen face on; lit from behind so only the bands remain.
+    AliasBuilder& b = builder_;
+    b.add_box_pose({0, 0, 0}, {16, 16, 96});
+    b.origin = {-8.0f, -8.0f, -48.0f};
+    b.skin.assign(64, kGrey);
+    upload();
+    light_from({1.0f, 0.0f, 0.0f});
+    ShadingSettings s;
+    s.mode = ShadingMode::metal;
+    s.splashback = false;
+    const nqr_camera camera = make_camera({-80.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f});
+    draw(s, camera);
+    const glm::vec3 kd = palette_rgb(kGrey);
+    int darkest = 255 * 3, brightest = 0;
+    for (int y = 24; y < kSize - 24; ++y) {
+        // The face x = -8 is 72 units from the eye; fov 90: height = ndc_y * 72.
+        const float height = ((y + 0.5f) / (kSize / 2.0f) - 1.0f) * 72.0f;
+        const float band = 0.5f + 0.5f * std::sin(height * s.metal_bands * 2.0f *
+                                                  std::numbers::pi_v<float> / 100.0f);
+        const Rgb pixel = gl_->pixel(kSize / 2, y);
+        EXPECT_COLOUR(pixel, to_rgb(kd * (0.55f + 0.6f * band))) << " at height " << height;
+        darkest = std::min(darkest, brightness(pixel));
+        brightest = std::max(brightest, brightness(pixel));
+    }
+    EXPECT_GT(brightest - darkest, 200);  // about 0.6 * 150 per channel
+}
+
+TEST_F(TechnicalShadingTest, ClassicModeIsAmbientPlusDirectional) {
+    upload_sphere(kGrey);
+    entity_.light.ambient = 0.3f;
+    entity_.light.directional = 0.5f;
+    entity_.light.color[1] = 0.8f;
+    entity_.light.color[2] = 0.6f;
+    ShadingSettings s;  // splash-back on: classic ignores it
+    s.mode = ShadingMode::classic;
+    const glm::vec3 kd = palette_rgb(kGrey), tint(1.0f, 0.8f, 0.6f);
+    EXPECT_COLOUR(pole_lit_at(1.0f, s), to_rgb(kd * 0.8f * tint));
+    EXPECT_COLOUR(pole_lit_at(0.5f, s), to_rgb(kd * 0.55f * tint));
+    EXPECT_COLOUR(pole_lit_at(0.0f, s), to_rgb(kd * 0.3f * tint));
+    EXPECT_COLOUR(pole_lit_at(-1.0f, s), to_rgb(kd * 0.3f * tint));
+}
+
+// ------------------------------------------------------------------ as the classic drawer
+
+TEST_F(TechnicalShadingTest, FullbrightSkinPixelsAreAddedUnlit) {
+    upload_sphere(colour::kFullbrightGreen);  // the lit skin is black there: k_d = 0
+    const ShadingSettings s = gooch_settings(false);
+    const glm::vec3 expected = gooch(glm::vec3(0.0f), -1.0f, s) + palette_rgb(240);
+    EXPECT_COLOUR(pole_lit_at(-1.0f, s), to_rgb(expected));
+}
+
+TEST_F(TechnicalShadingTest, HoleyModelsCutOutTransparentTexels) {
+    AliasBuilder& b = builder_;
+    make_sphere(b, {4, 4});
+    b.skin.assign(64, colour::kTransparent);
+    b.flags = classic::kAliasFlagHoley;
+    upload();
+    draw(gooch_settings(true));
+    EXPECT_EQ(pole_pixel(), kBackground);
+}
+
+TEST_F(TechnicalShadingTest, TranslucentEntityBlendsOverTheBackground) {
+    upload_sphere(kGrey);
+    const ShadingSettings s = gooch_settings(false);
+    entity_.alpha = 0.5f;
+    const glm::vec3 background = glm::vec3(kBackground.r, kBackground.g, kBackground.b) / 255.f;
+    const glm::vec3 shaded = gooch(palette_rgb(kGrey), 1.0f, s);
+    EXPECT_COLOUR(pole_lit_at(1.0f, s), to_rgb(0.5f * shaded + 0.5f * background));
+}
+
+TEST_F(TechnicalShadingTest, OnlyTheOutsideIsDrawnAndStateIsRestored) {
+    // From inside the sphere every face is seen from behind: all culled.
+    upload_sphere(kGrey);
+    draw(gooch_settings(true), make_camera({0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}));
+    for (const Rgb& p : gl_->pixels()) ASSERT_EQ(p, kBackground);
+    EXPECT_FALSE(glIsEnabled(GL_CULL_FACE));
+    EXPECT_FALSE(glIsEnabled(GL_BLEND));
+    EXPECT_FALSE(glIsEnabled(GL_STENCIL_TEST));
+    GLint value = -1;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &value);
+    EXPECT_EQ(value, 0);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &value);
+    EXPECT_EQ(value, 0);
+    GLboolean depth_writes = GL_FALSE;
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_writes);
+    EXPECT_TRUE(depth_writes);
+}
+
+TEST_F(TechnicalShadingTest, WritesViewSpaceNormalsToLocationOne) {
+    upload_sphere(kGrey);
+    GLuint normals = 0;
+    glGenTextures(1, &normals);
+    glBindTexture(GL_TEXTURE_2D, normals);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kSize, kSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl_->bind();
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, normals, 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, buffers);
+    draw(gooch_settings(true));
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    const Rgb encoded = pole_pixel();
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glDrawBuffers(1, buffers);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+    glDeleteTextures(1, &normals);
+    // The pole faces the eye: view-space normal (0, 0, 1), stored as n * 0.5 + 0.5.
+    EXPECT_TRUE(near(encoded, Rgb{128, 128, 255}, 3)) << encoded;
+}
+
+}  // namespace
+}  // namespace nq::npr::test
