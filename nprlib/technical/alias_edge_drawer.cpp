@@ -128,6 +128,7 @@ constexpr char kBackfaceLayout[] =
     "layout(triangle_strip, max_vertices = 12) out;\n";
 
 constexpr int kUnitSkin = 0;
+constexpr size_t kCandidateRingBytes = size_t(1) << 20;
 constexpr int kUnitPoses = 1;
 
 // Which edges this model gets under the settings.
@@ -192,6 +193,10 @@ bool AliasEdgeDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
     }
     true_edges_ = std::move(true_edges.program);
     backface_lines_ = std::move(backface.program);
+    if (!candidates_.create(tracker, kCandidateRingBytes)) {
+        error = "technical alias edges: cannot create the candidate-edge stream buffer";
+        return false;
+    }
     gl::bind_sampler_units(true_edges_, {"u_skin", "u_poses"});
     gl::bind_sampler_units(backface_lines_, {"u_skin", "u_poses"});
     glUseProgram(0);
@@ -199,6 +204,7 @@ bool AliasEdgeDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
 }
 
 void AliasEdgeDrawer::reset() {
+    candidates_.reset();
     true_edges_.reset();
     backface_lines_.reset();
 }
@@ -224,14 +230,27 @@ void AliasEdgeDrawer::set_entity_uniforms(gl::Program& program, const classic::F
     classic::set_alias_pose_uniforms(program, faces, entity, kUnitPoses);
 }
 
-void AliasEdgeDrawer::draw_true_edges(const AliasEdgeMesh& edges, int silhouettes, bool creases,
-                                      const EdgeSettings& settings) {
+void AliasEdgeDrawer::draw_true_edges(const nqr_entity& entity, const AliasEdgeMesh& edges,
+                                      int silhouettes, bool creases, const EdgeSettings& settings) {
     const float angle = std::clamp(settings.crease_angle_degrees, 0.0f, 180.0f);
-    glUniform1f(true_edges_.location("u_cos_crease"), std::cos(glm::radians(angle)));
+    const float cos_crease = std::cos(glm::radians(angle));
+    glUniform1f(true_edges_.location("u_cos_crease"), cos_crease);
     glUniform1i(true_edges_.location("u_silhouettes"), silhouettes);
     glUniform1i(true_edges_.location("u_find_creases"), creases ? 1 : 0);
-    glDrawElements(GL_LINES_ADJACENCY, edges.edge_index_count(), GL_UNSIGNED_INT,
-                   edges.edge_indices_offset());
+    const std::span<const uint32_t> candidates = edges.candidate_edges(entity, cos_crease, creases);
+    if (candidates.empty()) return;
+    const size_t offset = candidates_.push(candidates.data(), candidates.size_bytes(), 4);
+    if (offset == gl::StreamBuffer::kNoSpace) {  // larger than the ring: every edge instead
+        glDrawElements(GL_LINES_ADJACENCY, edges.edge_index_count(), GL_UNSIGNED_INT,
+                       edges.edge_indices_offset());
+        return;
+    }
+    // The VAO's element buffer is the mesh's own: borrow the slot for the stream, then give it
+    // back.
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, candidates_.id());
+    glDrawElements(GL_LINES_ADJACENCY, static_cast<GLsizei>(candidates.size()), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(offset));
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edges.index_buffer());
 }
 
 void AliasEdgeDrawer::draw_backface_lines(const AliasEdgeMesh& edges) {
@@ -260,7 +279,7 @@ void AliasEdgeDrawer::draw_entity(const classic::FrameView& view,
         set_entity_uniforms(true_edges_, view, frame_uniforms, entity, faces, settings);
         glActiveTexture(GL_TEXTURE0 + kUnitSkin);
         glBindTexture(GL_TEXTURE_2D, skin_texture);
-        draw_true_edges(edges, silhouette_mode(plan), plan.creases, settings.edges);
+        draw_true_edges(entity, edges, silhouette_mode(plan), plan.creases, settings.edges);
     }
     glBindVertexArray(0);
     glUseProgram(0);

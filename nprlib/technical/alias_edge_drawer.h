@@ -18,6 +18,7 @@
 #include "classic/alias_model_gpu.h"
 #include "classic/frame_view.h"
 #include "gl/program.h"
+#include "gl/stream_buffer.h"
 #include "nqr_renderer.h"
 #include "technical/alias_edge_mesh.h"
 #include "technical/edge_glsl.h"
@@ -44,12 +45,13 @@ class AliasEdgeDrawer {
                              const classic::AliasModelGpu& faces,
                              const TechnicalSettings& settings);
     // silhouettes: 0 off, 1 drawn here, 2 drawn by the back-face lines (so no creases there).
-    void draw_true_edges(const AliasEdgeMesh& edges, int silhouettes, bool creases,
-                         const EdgeSettings& settings);
+    void draw_true_edges(const nqr_entity& entity, const AliasEdgeMesh& edges, int silhouettes,
+                         bool creases, const EdgeSettings& settings);
     void draw_backface_lines(const AliasEdgeMesh& edges);
 
     gl::Program true_edges_;
     gl::Program backface_lines_;
+    gl::StreamBuffer candidates_;  // each entity's candidate edges, as element indices
 };
 
 }  // namespace nq::npr::technical

@@ -2,7 +2,11 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "adjacency/model_adjacency.h"
 #include "classic/alias_mesh.h"
@@ -78,6 +82,10 @@ std::unique_ptr<AliasEdgeMesh> AliasEdgeMesh::create(gl::ObjectTracker* tracker,
     append_edge_lines_adjacency(recovered.edges, indices);
     mesh->edge_count_ =
         static_cast<GLsizei>(indices.size()) - mesh->adjacency_count_ - mesh->triangle_count_;
+    mesh->model_ = &model;
+    mesh->edge_prims_.assign(indices.end() - mesh->edge_count_, indices.end());
+    mesh->positions_.resize(model.num_vertices);
+    mesh->candidates_.reserve(mesh->edge_prims_.size());
     const std::vector<float> uv = front_skin_coords(model);
 
     mesh->vertex_array_ = gl::VertexArray::create(tracker);
@@ -96,6 +104,65 @@ std::unique_ptr<AliasEdgeMesh> AliasEdgeMesh::create(gl::ObjectTracker* tracker,
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     return mesh;
+}
+
+namespace {
+
+// The entity's pose pair, clamped as set_alias_pose_uniforms clamps it, blended on the CPU.
+void blend_pose(const nqr_alias_model& model, const nqr_entity& entity,
+                std::vector<glm::vec3>& out) {
+    const uint32_t last = model.num_poses - 1;
+    const nqr_alias_vertex* pose0 =
+        model.poses + size_t(std::min(entity.pose0, last)) * model.num_vertices;
+    const nqr_alias_vertex* pose1 =
+        model.poses + size_t(std::min(entity.pose1, last)) * model.num_vertices;
+    const float t = std::clamp(entity.lerp, 0.0f, 1.0f);
+    for (uint32_t v = 0; v < model.num_vertices; ++v) {
+        for (int k = 0; k < 3; ++k) {
+            const float packed =
+                float(pose0[v].v[k]) + (float(pose1[v].v[k]) - float(pose0[v].v[k])) * t;
+            out[v][k] = model.scale[k] * packed + model.origin[k];
+        }
+    }
+}
+
+// Facing of a face with normal n through p, seen from eye: +1 front, -1 back, 0 too close to
+// call (kept either way).
+int facing(const glm::vec3& n, const glm::vec3& p, const glm::vec3& eye) {
+    const float d = glm::dot(n, eye - p);
+    const float tolerance = 1e-4f * glm::length(n) * glm::length(eye - p);
+    return d > tolerance ? 1 : (d < -tolerance ? -1 : 0);
+}
+
+}  // namespace
+
+std::span<const uint32_t> AliasEdgeMesh::candidate_edges(const nqr_entity& entity, float cos_crease,
+                                                         bool creases) const {
+    candidates_.clear();
+    if (!model_ || edge_prims_.empty()) return candidates_;
+    blend_pose(*model_, entity, positions_);
+    const glm::vec3 eye(entity.eye_model[0], entity.eye_model[1], entity.eye_model[2]);
+    // A degree of slack on the threshold: the shader's normals are not bit-identical to ours.
+    const float crease_limit =
+        std::cos(std::max(std::acos(std::clamp(cos_crease, -1.0f, 1.0f)) - 0.0175f, 0.0f));
+    for (size_t i = 0; i + 3 < edge_prims_.size(); i += 4) {
+        const uint32_t* prim = &edge_prims_[i];
+        bool keep = prim[3] == prim[0];  // an open border
+        if (!keep) {
+            const glm::vec3 &third = positions_[prim[0]], &p0 = positions_[prim[1]];
+            const glm::vec3 &p1 = positions_[prim[2]], &far = positions_[prim[3]];
+            const glm::vec3 n0 = glm::cross(p1 - p0, third - p0);
+            const glm::vec3 n1 = glm::cross(p0 - p1, far - p1);
+            const int f0 = facing(n0, p0, eye), f1 = facing(n1, p1, eye);
+            keep = f0 != f1 || f0 == 0;  // a silhouette, or too close to call
+            if (!keep && creases && f0 > 0) {
+                const float l0 = glm::length(n0), l1 = glm::length(n1);
+                keep = l0 > 0.0f && l1 > 0.0f && glm::dot(n0, n1) < crease_limit * l0 * l1;
+            }
+        }
+        if (keep) candidates_.insert(candidates_.end(), prim, prim + 4);
+    }
+    return candidates_;
 }
 
 std::string AliasEdgeMesh::verdict_line(const std::string& model_name) const {

@@ -15,7 +15,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "adjacency/recovery_stats.h"
 #include "adjacency/verdict.h"
@@ -44,6 +48,16 @@ class AliasEdgeMesh {
     const void* edge_indices_offset() const;
     // Byte offset of the triangle range in the element buffer (for glDrawElements).
     const void* triangle_indices_offset() const;
+    GLuint index_buffer() const { return indices_.id(); }
+
+    // The edge range's primitives (4 MDL indices each) that can be a silhouette or a crease of
+    // `entity`'s blended pose seen from entity.eye_model: the geometry shader, which decides,
+    // then runs over tens of edges instead of every edge (llvmpipe runs geometry and vertex
+    // shading on one thread). Conservative: facing tests within a small tolerance of zero and
+    // creases within one degree of the threshold are kept. Writes into storage owned by the
+    // mesh (no allocation); valid until the next call.
+    std::span<const uint32_t> candidate_edges(const nqr_entity& entity, float cos_crease,
+                                              bool creases) const;
 
   private:
     AliasEdgeMesh() = default;
@@ -51,6 +65,10 @@ class AliasEdgeMesh {
     gl::VertexArray vertex_array_;
     gl::Buffer skin_coords_, indices_;
     GLsizei adjacency_count_ = 0, triangle_count_ = 0, edge_count_ = 0;
+    const nqr_alias_model* model_ = nullptr;    // valid until the model is released
+    std::vector<uint32_t> edge_prims_;          // the edge range, kept on the CPU
+    mutable std::vector<glm::vec3> positions_;  // scratch: the blended pose
+    mutable std::vector<uint32_t> candidates_;  // scratch: what candidate_edges returns
     adjacency::RecoveryStats stats_;
     adjacency::Verdict verdict_;
 };

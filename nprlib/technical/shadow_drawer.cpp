@@ -46,9 +46,18 @@ void begin_shadow_state() {
     glStencilMask(0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    // Only the triangles facing the light: on a closed model the ones facing away project
+    // inside them, so the shadow is the same with half the triangles to set up. Projected
+    // onto the floor along the light, light-facing triangles keep their winding as seen from
+    // above (where the camera must be to see the floor): Quake's clockwise front.
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CW);
+    glCullFace(GL_BACK);
 }
 
 void end_shadow_state() {
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0, 0xFF);

@@ -337,6 +337,26 @@ TEST_F(TechnicalEdgesTest, MeshHoldsAdjacencyAndTrianglesAndTheVerdict) {
     EXPECT_EQ(broken.edges->triangle_index_count(), 15 * 3);
 }
 
+// The CPU pre-selection: the cube (model space -8..8) seen from a corner direction shows three
+// faces. Its 12 box edges: 3 between two visible faces (creases), 6 on the outline (silhouettes),
+// 3 between hidden faces; the 6 face diagonals are flat. Counted independently of the shader.
+TEST_F(TechnicalEdgesTest, CandidateEdgesAreTheOutlineAndTheVisibleCreases) {
+    TestModel& cube = add_model([](AliasBuilder& b) { make_cube(b, kGrey); });
+    nqr_entity entity{};
+    entity.size = sizeof entity;
+    const float eye[3] = {100.0f, 70.0f, 40.0f};
+    std::copy_n(eye, 3, entity.eye_model);
+    const float cos60 = 0.5f;
+    EXPECT_EQ(cube.edges->candidate_edges(entity, cos60, true).size(), 9u * 4);
+    EXPECT_EQ(cube.edges->candidate_edges(entity, cos60, false).size(), 6u * 4);
+    // Above 90 degrees no box edge is a crease: the outline alone.
+    EXPECT_EQ(cube.edges->candidate_edges(entity, -0.2f, true).size(), 6u * 4);
+    // Straight at one face: its 4 edges are the outline, nothing else faces the eye.
+    const float front[3] = {200.0f, 0.0f, 0.0f};
+    std::copy_n(front, 3, entity.eye_model);
+    EXPECT_EQ(cube.edges->candidate_edges(entity, cos60, true).size(), 4u * 4);
+}
+
 TEST_F(TechnicalEdgesTest, UnreadableModelIsRefusedWithAReason) {
     nqr_alias_model empty{};
     empty.size = sizeof empty;
