@@ -260,6 +260,16 @@ TEST(TechnicalShowroom, PenumbraAddsALighterFringeAroundADarkerUmbra) {
 
 // ------------------------------------------------------------------ demos
 
+// The run ended cleanly with one timedemo line counting every frame of `demo_file` (as an
+// in-process replay counts them).
+void expect_whole_timedemo(const SharedRun& run, const std::string& demo_file) {
+    expect_clean_exit(run.result);
+    const auto lines = timedemo_lines(run.result.out);
+    ASSERT_EQ(lines.size(), 1u) << run.result.out;
+    Vfs vfs = mount_lq1();
+    EXPECT_EQ(lines[0].frames, timedemo_frame_count(vfs, demo_file));
+}
+
 constexpr uint64_t kDemoPausedFrame = 760;  // the monster gallery (see engine_runs.h)
 
 // demo.dem entirely under technical (at 640x480, so 2-pixel edges), with an id reference and
@@ -288,12 +298,7 @@ const SharedRun& demo_technical() {
 }
 
 TEST(TechnicalDemo, DemoPlaysToTheEndUnderTechnical) {
-    const SharedRun& run = demo_technical();
-    expect_clean_exit(run.result);
-    const auto lines = timedemo_lines(run.result.out);
-    ASSERT_EQ(lines.size(), 1u) << run.result.out;
-    Vfs vfs = mount_lq1();
-    EXPECT_EQ(lines[0].frames, timedemo_frame_count(vfs, "demo.dem"));
+    expect_whole_timedemo(demo_technical(), "demo.dem");
 }
 
 TEST(TechnicalDemo, SilhouettesCoverTheOutlinesOfADemoFrame) {
@@ -350,11 +355,7 @@ const SharedRun& demo2_technical_swaps() {
 
 TEST(TechnicalDemo, Demo2PlaysToTheEndWithSwapsBothWays) {
     const SharedRun& run = demo2_technical_swaps();
-    expect_clean_exit(run.result);
-    const auto lines = timedemo_lines(run.result.out);
-    ASSERT_EQ(lines.size(), 1u) << run.result.out;
-    Vfs vfs = mount_lq1();
-    EXPECT_EQ(lines[0].frames, timedemo_frame_count(vfs, "demo2.dem"));
+    ASSERT_NO_FATAL_FAILURE(expect_whole_timedemo(run, "demo2.dem"));
     EXPECT_TRUE(lines_containing(run.result.out, "keeping").empty()) << run.result.out;
 
     RgbImage technical, classic;
