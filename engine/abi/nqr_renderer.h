@@ -43,7 +43,7 @@ extern "C" {
 #endif
 
 #define NQR_ABI_VERSION_MAJOR 1u
-#define NQR_ABI_VERSION_MINOR 0u
+#define NQR_ABI_VERSION_MINOR 1u
 #define NQR_ABI_VERSION ((NQR_ABI_VERSION_MAJOR << 16) | NQR_ABI_VERSION_MINOR)
 #define NQR_ABI_MAJOR(v) ((uint32_t)(v) >> 16)
 #define NQR_ENTRY_POINT "nqr_get_renderer"
@@ -299,7 +299,11 @@ enum nqr_entity_flags {
     NQR_ENTITY_VIEWMODEL = 1u << 0, /* the player's weapon: drawn last, depth range hack */
     NQR_ENTITY_STATIC = 1u << 1,    /* from svc_spawnstatic */
     NQR_ENTITY_TEMP = 1u << 2,      /* beams, explosions added by the client */
-    NQR_ENTITY_FULLBRIGHT = 1u << 3 /* ignore lighting (EF_BRIGHTFIELD, muzzle flash…) */
+    NQR_ENTITY_FULLBRIGHT = 1u << 3, /* ignore lighting (EF_BRIGHTFIELD, muzzle flash…) */
+    /* Since 1.1: in the PVS but its bounding sphere is outside the view frustum, so nothing of
+     * the model itself is on screen. Listed anyway for effects that reach into the view
+     * (shadows, reflections); drawers of the model skip it (nprlib's drawers do). */
+    NQR_ENTITY_OUTSIDE_VIEW = 1u << 4
 };
 
 typedef struct nqr_entity {
@@ -389,6 +393,11 @@ typedef struct nqr_frame {
     uint32_t num_particles;
 
     float blend[4]; /* full-screen tint (damage, powerups, liquids), premultiplied by alpha */
+
+    /* Since 1.1. The view frustum's side planes (left, right, bottom, top) in world space as
+     * (nx, ny, nz, d), unit normals pointing inward: p is inside a plane when n.p >= d. (Quake
+     * culls nothing by distance, so there are no near and far planes.) */
+    float view_planes[4][4];
 } nqr_frame;
 
 /* ======================================================================= the plugin */

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "client/nqr_export.h"
-#include "render/frustum.h"
 
 namespace nq {
 
@@ -75,11 +74,10 @@ const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
     frame_.world = level.model_id(1);
     frame_.num_visible_surfaces = 0;
     frame_.visible_surfaces = visible_surfaces_.data();
+    set_view_frustum();
     if (WorldCuller* culler = level.culler()) {
-        Frustum frustum =
-            Frustum::sides_from_view_projection(load_matrix(frame_.camera.view_projection));
         frame_.num_visible_surfaces =
-            culler->cull(to_glm(view.origin), frustum, visible_surfaces_);
+            culler->cull(to_glm(view.origin), frustum_, visible_surfaces_);
     }
 
     light_dt_ = static_cast<float>(client.time() - client.old_time());
@@ -87,6 +85,17 @@ const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
     for (const VisibleEntity& v : visible_.entities()) add_entity(level, client, v);
     link_lists();
     return frame_;
+}
+
+void SceneBuilder::set_view_frustum() {
+    frustum_ = Frustum::sides_from_view_projection(load_matrix(frame_.camera.view_projection));
+    for (size_t i = 0; i < std::size(frame_.view_planes); ++i) {
+        const FrustumPlane& plane = frustum_.planes[i];
+        frame_.view_planes[i][0] = plane.normal.x;
+        frame_.view_planes[i][1] = plane.normal.y;
+        frame_.view_planes[i][2] = plane.normal.z;
+        frame_.view_planes[i][3] = plane.dist;
+    }
 }
 
 void SceneBuilder::add_entity(Level& level, const ClientState& client, const VisibleEntity& v) {
@@ -98,18 +107,23 @@ void SceneBuilder::add_entity(Level& level, const ClientState& client, const Vis
         return;
     }
     const RenderModel* model = level.models().get(id);
-    if (!(v.flags & kVisibleViewModel) && level.culler()) {
-        // Conservative box: the model's bounds around its origin, rotation-proof by radius.
-        float r = std::max(model->abi()->radius, 1.0f);
-        glm::vec3 o = to_glm(v.origin);
-        if (!level.culler()->box_potentially_visible(o - r, o + r)) {
-            ++counts_.entities_culled;
-            return;
-        }
+    // Conservative bounds: the model's radius around its origin, rotation-proof.
+    const float radius = std::max(model->abi()->radius, 1.0f) * std::max(v.scale, 1.0f);
+    const glm::vec3 origin = to_glm(v.origin);
+    const bool view_model = (v.flags & kVisibleViewModel) != 0;
+    if (!view_model && level.culler() &&
+        !level.culler()->box_potentially_visible(origin - radius, origin + radius)) {
+        ++counts_.entities_culled;
+        return;
     }
     if (entity_count_ == entities_.size()) return;
     nqr_entity& e = entities_[entity_count_++];
     export_entity(v, id, e);
+    // Kept, flagged: a plugin may still want it for what reaches into the view (shadows).
+    if (!view_model && frustum_.sphere_outside(origin, radius)) {
+        e.flags |= NQR_ENTITY_OUTSIDE_VIEW;
+        ++counts_.entities_outside_view;
+    }
     fill_entity_transform(kind, frame_.camera, e);
     if (const LightSampler* sampler = level.light_sampler()) {
         EntityLightQuery query;
@@ -138,6 +152,7 @@ nqr_frame& SceneBuilder::begin_custom(const CameraSetup& camera, double time, do
     frame_.frame_time = frame_time;
     frame_.flags = 0;
     fill_camera(camera, frame_.camera);
+    set_view_frustum();
     lightstyles_.fill(1.0f);
     frame_.world = 0;
     frame_.num_visible_surfaces = 0;

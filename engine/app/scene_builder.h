@@ -12,6 +12,7 @@
 #include "client/view.h"
 #include "client/visible_entities.h"
 #include "nqr_renderer.h"
+#include "render/frustum.h"
 #include "render/light_smoother.h"
 #include "render/view_transform.h"
 
@@ -19,7 +20,8 @@ namespace nq {
 
 struct SceneCounts {
     uint32_t entities_considered = 0;
-    uint32_t entities_culled = 0;
+    uint32_t entities_culled = 0;        // outside the PVS: left out of the frame
+    uint32_t entities_outside_view = 0;  // in the PVS, outside the frustum: flagged
     uint32_t entities_without_model = 0;
 };
 
@@ -51,6 +53,7 @@ public:
 
 private:
     void reset_lists();
+    void set_view_frustum();  // frustum_ and frame_.view_planes from the camera
     void add_entity(Level& level, const ClientState& client, const VisibleEntity& v);
     void link_lists();
 
@@ -69,6 +72,7 @@ private:
     };
     std::vector<SmoothedLight> smoothed_;
     float light_dt_ = 0;
+    Frustum frustum_;  // this frame's side planes
     SceneCounts counts_;
 };
 

@@ -42,4 +42,11 @@ bool Frustum::box_outside(const glm::vec3& mins, const glm::vec3& maxs) const {
     return false;
 }
 
+bool Frustum::sphere_outside(const glm::vec3& centre, float radius) const {
+    for (uint32_t i = 0; i < num_planes; ++i) {
+        if (glm::dot(planes[i].normal, centre) - planes[i].dist < -radius) return true;
+    }
+    return false;
+}
+
 }  // namespace nq

@@ -28,6 +28,8 @@ struct Frustum {
     // True when the axis-aligned box lies wholly outside one plane (conservative: a box near a
     // frustum corner may be kept although it is outside).
     bool box_outside(const glm::vec3& mins, const glm::vec3& maxs) const;
+    // True when the sphere lies wholly outside one plane (conservative, as box_outside).
+    bool sphere_outside(const glm::vec3& centre, float radius) const;
 };
 
 }  // namespace nq

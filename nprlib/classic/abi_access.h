@@ -3,6 +3,7 @@
 // refused rather than read past its end (an older engine that lacks the fields we use).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "nqr_renderer.h"
@@ -12,6 +13,19 @@ namespace nq::npr::classic {
 template <class T>
 bool has_known_prefix(const T* item) {
     return item != nullptr && item->size >= sizeof(T);
+}
+
+// A frame is read from its ABI 1.0 prefix on: fields appended since are checked one by one.
+inline bool frame_readable(const nqr_frame* frame) {
+    return frame != nullptr && frame->size >= offsetof(nqr_frame, view_planes);
+}
+inline bool frame_has_view_planes(const nqr_frame& frame) {
+    return frame.size >= offsetof(nqr_frame, view_planes) + sizeof(frame.view_planes);
+}
+
+// An entity whose model can be on screen: readable and not flagged outside the view frustum.
+inline bool entity_in_view(const nqr_entity* entity) {
+    return has_known_prefix(entity) && (entity->flags & NQR_ENTITY_OUTSIDE_VIEW) == 0;
 }
 
 // Element i of a size-prefixed array (its first element gives the stride).

@@ -181,7 +181,7 @@ void AliasDrawer::draw_pass(const nqr_frame& frame, const FrameView& view,
     const int pass_index = static_cast<int>(pass);
     for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
         const nqr_entity* entity = frame.alias_entities[i];
-        if (!has_known_prefix(entity) || !in_pass(*entity, pass_index)) continue;
+        if (!entity_in_view(entity) || !in_pass(*entity, pass_index)) continue;
         const RegisteredModel* model = models.find(entity->model);
         if (!model || !model->alias) continue;
         draw_entity(frame, view, *entity, *model->alias);

@@ -59,7 +59,7 @@ void ClassicRenderer::release_model(nqr_model_id id) {
 }
 
 bool ClassicRenderer::frame_usable(const nqr_frame* frame) {
-    return has_known_prefix(frame);
+    return frame_readable(frame);
 }
 
 void ClassicRenderer::draw_world(const nqr_frame* frame) {

@@ -14,7 +14,7 @@ glm::mat4 mat4_from(const float* column_major) {
 }
 
 bool read_frame_view(const nqr_frame* frame, FrameView& out) {
-    if (!has_known_prefix(frame) || !has_known_prefix(&frame->camera)) return false;
+    if (!frame_readable(frame) || !has_known_prefix(&frame->camera)) return false;
     const nqr_camera& camera = frame->camera;
     out.view_projection = mat4_from(camera.view_projection);
     out.view = mat4_from(camera.view);
@@ -22,7 +22,21 @@ bool read_frame_view(const nqr_frame* frame, FrameView& out) {
     out.forward = glm::make_vec3(camera.forward);
     out.right = glm::make_vec3(camera.right);
     out.up = glm::make_vec3(camera.up);
+    out.num_side_planes = 0;
+    if (frame_has_view_planes(*frame)) {
+        for (const float* plane : frame->view_planes) {
+            out.side_planes[out.num_side_planes++] = glm::make_vec4(plane);
+        }
+    }
     return true;
+}
+
+bool sphere_outside_view(const FrameView& view, const glm::vec3& centre, float radius) {
+    for (int i = 0; i < view.num_side_planes; ++i) {
+        const glm::vec4& plane = view.side_planes[i];
+        if (glm::dot(glm::vec3(plane), centre) - plane.w < -radius) return true;
+    }
+    return false;
 }
 
 glm::mat3 normal_to_view(const FrameView& view, const glm::mat4& model) {

@@ -102,7 +102,7 @@ void SpriteDrawer::draw_sprite_entities(const nqr_frame& frame, const ModelRegis
     begin_classic_pass();
     for (uint32_t i = 0; i < frame.num_sprite_entities; ++i) {
         const nqr_entity* entity = frame.sprite_entities[i];
-        if (!has_known_prefix(entity)) continue;
+        if (!entity_in_view(entity)) continue;
         const RegisteredModel* model = models.find(entity->model);
         if (!model || !model->sprite) continue;
         draw_entity(view, *entity, *model->sprite);

@@ -173,7 +173,7 @@ void WorldDrawer::draw_brush_entities(const nqr_frame& frame, const ModelRegistr
     begin_classic_pass();
     for (uint32_t i = 0; i < frame.num_brush_entities; ++i) {
         const nqr_entity* entity = frame.brush_entities[i];
-        if (!has_known_prefix(entity)) continue;
+        if (!entity_in_view(entity)) continue;
         const RegisteredModel* model = models.find(entity->model);
         if (!model || !model->brush) continue;
         const SurfaceSelection selection{nullptr, model->first_surface, model->num_surfaces};

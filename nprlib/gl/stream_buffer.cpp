@@ -25,7 +25,7 @@ bool StreamBuffer::create(ObjectTracker* tracker, size_t capacity_bytes, Mode mo
     if (mode == Mode::persistent && !storage) return false;
     mode_ = (mode == Mode::automatic) ? (storage ? Mode::persistent : Mode::orphaning) : mode;
     tracker_ = tracker;
-    capacity_ = align_up(capacity_bytes, 256 * kRegions);
+    capacity_ = align_up(capacity_bytes, kGranularity * kRegions);
     buffer_ = Buffer::create(tracker);
     glBindBuffer(GL_ARRAY_BUFFER, buffer_.id());
     if (mode_ == Mode::persistent) {
@@ -78,6 +78,10 @@ size_t StreamBuffer::push(const void* data, size_t bytes, size_t alignment) {
 }
 
 void* StreamBuffer::reserve(size_t bytes, size_t alignment, size_t* offset_out) {
+    // Regions start at multiples of kGranularity: an alignment that divides it holds there too.
+    if (alignment > kGranularity || (alignment != 0 && kGranularity % alignment != 0)) {
+        return nullptr;
+    }
     if (!buffer_ || bytes == 0 || bytes > max_push()) return nullptr;
     unmap();
     return mode_ == Mode::persistent ? reserve_persistent(bytes, alignment, offset_out)

@@ -22,6 +22,8 @@ class StreamBuffer {
     enum class Mode { automatic, persistent, orphaning };
 
     static constexpr int kRegions = 4;
+    // Offsets are aligned to a divisor of this (push/reserve refuse other alignments).
+    static constexpr size_t kGranularity = 256;
     static constexpr size_t kNoSpace = static_cast<size_t>(-1);
 
     StreamBuffer() = default;
@@ -34,8 +36,9 @@ class StreamBuffer {
     bool create(ObjectTracker* tracker, size_t capacity_bytes, Mode mode = Mode::automatic);
     void reset();
 
-    // Copies `bytes` into the ring at an offset aligned to `alignment` and returns that offset,
-    // or kNoSpace when one push is larger than max_push().
+    // Copies `bytes` into the ring at an offset aligned to `alignment` (a divisor of
+    // kGranularity) and returns that offset, or kNoSpace when one push is larger than max_push()
+    // or the alignment is not one.
     size_t push(const void* data, size_t bytes, size_t alignment = 16);
 
     // Reserves space and returns a writable pointer (valid until the next push/reserve) and its

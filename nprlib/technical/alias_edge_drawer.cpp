@@ -3,161 +3,48 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <cmath>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "classic/abi_access.h"
 #include "classic/alias_pose_glsl.h"
+#include "technical/alias_pose.h"
 #include "technical/shading_glsl.h"
 
 namespace nq::npr::technical {
 namespace {
 
-// Per MDL vertex (gl_VertexID): the blended pose position, its view-space position, the shaded
-// colour under it (for white addition and fade) and its distance from the eye in world units.
-// (Shading here rather than per emitted edge in the geometry shader is faster on llvmpipe,
-// which runs geometry shaders eight primitives at a time with every branch taken.)
+// After the pose, shading and edge libraries. The colour is shaded at this vertex's own end.
 constexpr char kVertexBody[] = R"(
-layout(location = 0) in vec2 a_skin_coord;
+layout(location = 0) in vec3 a_own;
+layout(location = 1) in vec3 a_other;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in uint a_packed;  // side | kind << 1 | MDL vertex << 3
 uniform sampler2D u_skin;
 uniform mat4 u_model;
-uniform mat4 u_view;
+uniform mat4 u_model_view;
 uniform mat3 u_normal_to_world;
 uniform vec3 u_eye_world;
 uniform vec3 u_light_direction;
-out EdgeVertex {
-    vec3 model_position;
-    vec3 view_position;
-    vec3 shaded;
-    float distance;
-    flat int mdl_vertex;
-} v_out;
 void main() {
-    vec3 position = pose_position(gl_VertexID);
-    vec3 world = (u_model * vec4(position, 1.0)).xyz;
-    vec3 normal = u_normal_to_world * pose_normal(gl_VertexID);
+    int side = int(a_packed & 1u);
+    int kind = int((a_packed >> 1u) & 3u);
+    vec3 normal = u_normal_to_world * pose_normal(int(a_packed >> 3u));
     float len = length(normal);
     normal = len > 1e-6 ? normal / len : vec3(0.0, 0.0, 1.0);
-    vec3 kd = surface_kd(u_skin, a_skin_coord, 0.0);
-    v_out.model_position = position;
-    v_out.view_position = (u_view * vec4(world, 1.0)).xyz;
-    v_out.shaded = technical_shade(kd, normal, u_light_direction, position.z);
-    v_out.distance = length(world - u_eye_world);
-    v_out.mdl_vertex = gl_VertexID;
-    gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
+    vec3 shaded = technical_shade(surface_kd(u_skin, a_uv, 0.0), normal, u_light_direction, a_own.z);
+    vec3 world = (u_model * vec4(a_own, 1.0)).xyz;
+    g_color = edge_color(kind, shaded, length(world - u_eye_world));
+    gl_Position = edge_corner_at((u_model_view * vec4(a_own, 1.0)).xyz,
+                                 (u_model_view * vec4(a_other, 1.0)).xyz, kind, side);
 }
 )";
-
-// Shared by both geometry shaders, after their layout lines and the edge library. Facing is
-// tested in model space against the true eye, on the blended pose.
-constexpr char kGeometryCommon[] = R"(
-in EdgeVertex {
-    vec3 model_position;
-    vec3 view_position;
-    vec3 shaded;
-    float distance;
-    flat int mdl_vertex;
-} v_in[];
-uniform vec3 u_eye_model;
-const int NO_EDGE = -1;
-bool faces_eye(vec3 normal, vec3 point) { return dot(normal, u_eye_model - point) > 0.0; }
-bool degenerate(vec3 normal) { return dot(normal, normal) < 1e-10; }
-void emit_between(int a, int b, int kind) {
-    emit_edge(v_in[a].view_position, v_in[b].view_position,
-              edge_color(kind, v_in[a].shaded, v_in[a].distance),
-              edge_color(kind, v_in[b].shaded, v_in[b].distance), kind);
-}
-)";
-
-// Input, per mesh edge: face0's third corner, the edge's ends v0 and v1, the neighbour's far
-// corner (edge range of alias_edge_mesh.h); faces wind counter-clockwise seen from outside, so
-// face0 is (v0, v1, third) and the neighbour (v1, v0, far). One invocation, at most one quad.
-constexpr char kTrueEdgesBody[] = R"(
-#define SILHOUETTES_OFF 0
-#define SILHOUETTES_HERE 1
-#define SILHOUETTES_BY_BACKFACE 2
-uniform float u_cos_crease;
-uniform int u_silhouettes;
-uniform int u_find_creases;
-
-int silhouette_kind() { return u_silhouettes == SILHOUETTES_HERE ? EDGE_SILHOUETTE : NO_EDGE; }
-
-int classify_edge() {
-    vec3 third = v_in[0].model_position, p0 = v_in[1].model_position;
-    vec3 p1 = v_in[2].model_position, far = v_in[3].model_position;
-    // An open border (the far corner is face0's own third corner) outlines from either side.
-    if (v_in[3].mdl_vertex == v_in[0].mdl_vertex) return silhouette_kind();
-    vec3 n0 = cross(p1 - p0, third - p0), n1 = cross(p0 - p1, far - p1);
-    if (degenerate(n0) || degenerate(n1)) return NO_EDGE;
-    bool front0 = faces_eye(n0, p0), front1 = faces_eye(n1, p1);
-    // A silhouette is no crease, unless silhouettes are off.
-    if (front0 != front1 && u_silhouettes != SILHOUETTES_OFF) return silhouette_kind();
-    if (u_find_creases == 0 || !(front0 || front1)) return NO_EDGE;
-    if (dot(normalize(n0), normalize(n1)) >= u_cos_crease) return NO_EDGE;
-    // Convex (ridge) when the neighbour's far corner lies behind face0's plane.
-    return dot(n0, far - p0) < 0.0 ? EDGE_RIDGE : EDGE_VALLEY;
-}
-
-void main() {
-    int kind = classify_edge();
-    if (kind != NO_EDGE) emit_between(1, 2, kind);
-}
-)";
-
-// The paper's back-face lines: all three edges of every back-facing triangle.
-constexpr char kBackfaceBody[] = R"(
-void main() {
-    vec3 p0 = v_in[0].model_position;
-    vec3 normal = cross(v_in[1].model_position - p0, v_in[2].model_position - p0);
-    if (degenerate(normal) || faces_eye(normal, p0)) return;
-    emit_between(0, 1, EDGE_BACKFACE);
-    emit_between(1, 2, EDGE_BACKFACE);
-    emit_between(2, 0, EDGE_BACKFACE);
-}
-)";
-
-constexpr char kTrueEdgesLayout[] =
-    "#version 330 core\n"
-    "layout(lines_adjacency) in;\n"
-    "layout(triangle_strip, max_vertices = 4) out;\n";
-constexpr char kBackfaceLayout[] =
-    "#version 330 core\n"
-    "layout(triangles) in;\n"
-    "layout(triangle_strip, max_vertices = 12) out;\n";
 
 constexpr int kUnitSkin = 0;
-constexpr size_t kCandidateRingBytes = size_t(1) << 20;
 constexpr int kUnitPoses = 1;
-
-// Which edges this model gets under the settings.
-struct EdgePlan {
-    bool silhouettes = false;  // true silhouettes from adjacency
-    bool creases = false;
-    bool backface_lines = false;  // in place of true silhouettes
-};
-
-// u_silhouettes: the SILHOUETTES_* constants of kTrueEdgesBody.
-enum SilhouetteMode : int { kSilhouettesOff = 0, kSilhouettesHere = 1, kSilhouettesByBackface = 2 };
-
-SilhouetteMode silhouette_mode(const EdgePlan& plan) {
-    if (plan.silhouettes) return kSilhouettesHere;
-    return plan.backface_lines ? kSilhouettesByBackface : kSilhouettesOff;
-}
-
-EdgePlan plan_edges(const AliasEdgeMesh& mesh, const EdgeSettings& s) {
-    const bool fallback = s.backface_lines == BackfaceLines::always ||
-                          (s.backface_lines == BackfaceLines::unclean_models && !mesh.clean());
-    const bool has_adjacency = mesh.adjacency_index_count() > 0;
-    EdgePlan plan;
-    plan.backface_lines = s.silhouettes && fallback && mesh.triangle_index_count() > 0;
-    plan.silhouettes = s.silhouettes && !fallback && has_adjacency;
-    // Creases need trustworthy adjacency, unless back-face lines are refused altogether.
-    plan.creases =
-        s.creases && has_adjacency && (mesh.clean() || s.backface_lines == BackfaceLines::never);
-    return plan;
-}
+// One push holds a frame's edges: 32 MB of ring, 8 MB (200k quad corners) a push.
+constexpr size_t kStreamBytes = size_t{32} << 20;
 
 glm::vec3 light_direction(const nqr_entity& entity) {
     const nqr_entity_light& light = entity.light;
@@ -167,123 +54,169 @@ glm::vec3 light_direction(const nqr_entity& entity) {
     return len > 1e-6f ? direction / len : glm::vec3(0.0f, 0.0f, 1.0f);
 }
 
-gl::ProgramBuild build_program(const char* name, const char* layout, const char* body,
-                               gl::ObjectTracker* tracker) {
-    const std::string vertex = std::string("#version 330 core\n") + classic::kAliasPoseLibrary +
-                               kShadingLibrary + kVertexBody;
-    const std::string geometry =
-        std::string(layout) + kEdgeGeometryLibrary + kGeometryCommon + body;
-    return gl::Program::build({name, vertex.c_str(), kEdgeFragment, geometry.c_str()}, tracker);
+uint16_t unit_short(float value) {
+    return static_cast<uint16_t>(std::clamp(value, 0.0f, 1.0f) * 65535.0f + 0.5f);
+}
+
+std::vector<uint32_t> quad_pattern(size_t quads) {
+    std::vector<uint32_t> indices;
+    indices.reserve(quads * 6);
+    for (uint32_t q = 0; q < quads; ++q) {
+        const uint32_t v = q * 4;
+        indices.insert(indices.end(), {v, v + 1, v + 2, v, v + 2, v + 3});
+    }
+    return indices;
 }
 
 }  // namespace
 
 bool AliasEdgeDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
-    gl::ProgramBuild true_edges =
-        build_program("technical alias edges", kTrueEdgesLayout, kTrueEdgesBody, tracker);
-    if (!true_edges.ok()) {
-        error = true_edges.error;
+    reset();
+    const std::string vertex = std::string("#version 330 core\n") + classic::kAliasPoseLibrary +
+                               kShadingLibrary + kEdgeLibrary + kEdgeVertexLibrary + kVertexBody;
+    gl::ProgramBuild build =
+        gl::Program::build({"technical alias edges", vertex.c_str(), kEdgeFragment}, tracker);
+    if (!build.ok()) {
+        error = build.error;
         return false;
     }
-    gl::ProgramBuild backface =
-        build_program("technical alias back-face lines", kBackfaceLayout, kBackfaceBody, tracker);
-    if (!backface.ok()) {
-        error = backface.error;
-        return false;
-    }
-    true_edges_ = std::move(true_edges.program);
-    backface_lines_ = std::move(backface.program);
-    if (!candidates_.create(tracker, kCandidateRingBytes)) {
-        error = "technical alias edges: cannot create the candidate-edge stream buffer";
-        return false;
-    }
-    gl::bind_sampler_units(true_edges_, {"u_skin", "u_poses"});
-    gl::bind_sampler_units(backface_lines_, {"u_skin", "u_poses"});
+    program_ = std::move(build.program);
+    gl::bind_sampler_units(program_, {"u_skin", "u_poses"});
     glUseProgram(0);
+    if (!stream_.create(tracker, kStreamBytes)) {
+        error = "technical alias edges: cannot create the edge stream buffer";
+        return false;
+    }
+    max_edges_ = stream_.max_push() / (4 * sizeof(Corner));
+    const std::vector<uint32_t> indices = quad_pattern(max_edges_);
+    quad_indices_ = gl::Buffer::create(tracker);
+    vertex_array_ = gl::VertexArray::create(tracker);
+    glBindVertexArray(vertex_array_.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, quad_indices_.id());
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * 4),
+                 indices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, stream_.id());
+    const GLsizei stride = sizeof(Corner);
+    const auto at = [](size_t offset) { return reinterpret_cast<const void*>(offset); };
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(Corner, own)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(Corner, other)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_UNSIGNED_SHORT, GL_TRUE, stride, at(offsetof(Corner, uv)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribIPointer(3, 1, GL_UNSIGNED_INT, stride, at(offsetof(Corner, packed)));
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    corners_.reserve(4096);
+    found_.reserve(1024);
     return true;
 }
 
 void AliasEdgeDrawer::reset() {
-    candidates_.reset();
-    true_edges_.reset();
-    backface_lines_.reset();
+    vertex_array_.reset();
+    quad_indices_.reset();
+    stream_.reset();
+    program_.reset();
+    corners_.clear();
+    uploaded_ = false;
 }
 
-void AliasEdgeDrawer::set_entity_uniforms(gl::Program& program, const classic::FrameView& view,
-                                          const EdgeFrameUniforms& frame_uniforms,
-                                          const nqr_entity& entity,
-                                          const classic::AliasModelGpu& faces,
-                                          const TechnicalSettings& settings) {
+void AliasEdgeDrawer::begin_frame() {
+    corners_.clear();
+    uploaded_ = false;
+}
+
+EdgeSpan AliasEdgeDrawer::add_entity(const nqr_entity& entity, const AliasEdgeMesh& mesh,
+                                     const glm::vec3* pose, const EdgeSettings& settings) {
+    EdgeSpan span{corners_.size() / 4, 0};
+    const EdgeQuery query = plan_edge_query(mesh, settings);
+    if (!query.any() || !pose || uploaded_) return span;
+    found_.clear();
+    mesh.find_edges(pose, glm::make_vec3(entity.eye_model), query, found_);
+    // What one push cannot hold is left out (tens of thousands of edges in one frame).
+    const size_t room = max_edges_ - std::min(max_edges_, span.first_edge);
+    span.edge_count = std::min(found_.size(), room);
+    const std::span<const glm::vec2> uv = mesh.skin_coords();
+    const auto corner = [&](const glm::vec3& own, const glm::vec3& other, uint32_t vertex,
+                            uint32_t kind, uint32_t side) {
+        corners_.push_back({own, other, {unit_short(uv[vertex].x), unit_short(uv[vertex].y)},
+                            side | kind << 1 | vertex << 3});
+    };
+    for (size_t i = 0; i < span.edge_count; ++i) {
+        const FoundEdge& e = found_[i];
+        const uint32_t kind = static_cast<uint32_t>(e.kind);
+        const glm::vec3 &a = pose[e.v0], &b = pose[e.v1];
+        corner(a, b, e.v0, kind, 0);
+        corner(a, b, e.v0, kind, 1);
+        corner(b, a, e.v1, kind, 0);
+        corner(b, a, e.v1, kind, 1);
+    }
+    return span;
+}
+
+void AliasEdgeDrawer::upload() {
+    uploaded_ = true;
+    if (corners_.empty()) return;
+    const size_t offset = stream_.push(corners_.data(), corners_.size() * sizeof(Corner),
+                                       sizeof(Corner));
+    base_vertex_ = offset == gl::StreamBuffer::kNoSpace ? 0 : offset / sizeof(Corner);
+    if (offset == gl::StreamBuffer::kNoSpace) corners_.clear();  // cannot happen: add_entity caps
+}
+
+void AliasEdgeDrawer::begin(const classic::FrameView& view,
+                            const EdgeFrameUniforms& frame_uniforms,
+                            const TechnicalSettings& settings) {
+    program_.use();
+    glUniform3fv(program_.location("u_eye_world"), 1, glm::value_ptr(view.eye));
+    set_shading_uniforms(program_, settings.shading);
+    set_edge_uniforms(program_, settings.edges, frame_uniforms);
+    glBindVertexArray(vertex_array_.id());
+}
+
+void AliasEdgeDrawer::draw_entity(const classic::FrameView& view, const nqr_entity& entity,
+                                  const classic::AliasModelGpu& faces, GLuint skin_texture,
+                                  EdgeSpan span) {
+    if (span.edge_count == 0 || !uploaded_ || !classic::has_known_prefix(&entity)) return;
     const glm::mat4 model = classic::mat4_from(entity.model_matrix);
+    const glm::mat4 model_view = view.view * model;
     const glm::mat3 normal_to_world = glm::inverseTranspose(glm::mat3(model));
-    glUniformMatrix4fv(program.location("u_model"), 1, GL_FALSE, entity.model_matrix);
-    glUniformMatrix4fv(program.location("u_view"), 1, GL_FALSE, glm::value_ptr(view.view));
-    glUniformMatrix3fv(program.location("u_normal_to_world"), 1, GL_FALSE,
+    glUniformMatrix4fv(program_.location("u_model"), 1, GL_FALSE, entity.model_matrix);
+    glUniformMatrix4fv(program_.location("u_model_view"), 1, GL_FALSE,
+                       glm::value_ptr(model_view));
+    glUniformMatrix3fv(program_.location("u_normal_to_world"), 1, GL_FALSE,
                        glm::value_ptr(normal_to_world));
-    glUniform3fv(program.location("u_eye_world"), 1, glm::value_ptr(view.eye));
-    glUniform3fv(program.location("u_eye_model"), 1, entity.eye_model);
     const glm::vec3 light = light_direction(entity);
-    glUniform3fv(program.location("u_light_direction"), 1, glm::value_ptr(light));
-    set_shading_uniforms(program, settings.shading);
-    set_entity_light_uniforms(program, entity);
-    set_edge_uniforms(program, settings.edges, frame_uniforms);
-    classic::set_alias_pose_uniforms(program, faces, entity, kUnitPoses);
+    glUniform3fv(program_.location("u_light_direction"), 1, glm::value_ptr(light));
+    set_entity_light_uniforms(program_, entity);
+    classic::set_alias_pose_uniforms(program_, faces, entity, kUnitPoses);
+    glActiveTexture(GL_TEXTURE0 + kUnitSkin);
+    glBindTexture(GL_TEXTURE_2D, skin_texture);
+    glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(span.edge_count * 6),
+                             GL_UNSIGNED_INT, nullptr,
+                             static_cast<GLint>(base_vertex_ + span.first_edge * 4));
 }
 
-void AliasEdgeDrawer::draw_true_edges(const nqr_entity& entity, const AliasEdgeMesh& edges,
-                                      int silhouettes, bool creases, const EdgeSettings& settings) {
-    const float angle = std::clamp(settings.crease_angle_degrees, 0.0f, 180.0f);
-    const float cos_crease = std::cos(glm::radians(angle));
-    glUniform1f(true_edges_.location("u_cos_crease"), cos_crease);
-    glUniform1i(true_edges_.location("u_silhouettes"), silhouettes);
-    glUniform1i(true_edges_.location("u_find_creases"), creases ? 1 : 0);
-    const std::span<const uint32_t> candidates = edges.candidate_edges(entity, cos_crease, creases);
-    if (candidates.empty()) return;
-    const size_t offset = candidates_.push(candidates.data(), candidates.size_bytes(), 4);
-    if (offset == gl::StreamBuffer::kNoSpace) {  // larger than the ring: every edge instead
-        glDrawElements(GL_LINES_ADJACENCY, edges.edge_index_count(), GL_UNSIGNED_INT,
-                       edges.edge_indices_offset());
-        return;
-    }
-    // The VAO's element buffer is the mesh's own: borrow the slot for the stream, then give it
-    // back.
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, candidates_.id());
-    glDrawElements(GL_LINES_ADJACENCY, static_cast<GLsizei>(candidates.size()), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(offset));
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edges.index_buffer());
-}
-
-void AliasEdgeDrawer::draw_backface_lines(const AliasEdgeMesh& edges) {
-    // emit_edge leaves EDGE_BACKFACE quads at their own depth: the front faces hide them.
-    glDrawElements(GL_TRIANGLES, edges.triangle_index_count(), GL_UNSIGNED_INT,
-                   edges.triangle_indices_offset());
-}
-
-void AliasEdgeDrawer::draw_entity(const classic::FrameView& view,
-                                  const EdgeFrameUniforms& frame_uniforms, const nqr_entity& entity,
-                                  const classic::AliasModelGpu& faces, const AliasEdgeMesh& edges,
-                                  GLuint skin_texture, const TechnicalSettings& settings) {
-    if (!true_edges_ || !classic::has_known_prefix(&entity)) return;
-    const EdgePlan plan = plan_edges(edges, settings.edges);
-    if (!plan.silhouettes && !plan.creases && !plan.backface_lines) return;
-    glBindVertexArray(edges.vertex_array());
-    if (plan.backface_lines) {
-        backface_lines_.use();
-        set_entity_uniforms(backface_lines_, view, frame_uniforms, entity, faces, settings);
-        glActiveTexture(GL_TEXTURE0 + kUnitSkin);
-        glBindTexture(GL_TEXTURE_2D, skin_texture);
-        draw_backface_lines(edges);
-    }
-    if (plan.silhouettes || plan.creases) {
-        true_edges_.use();
-        set_entity_uniforms(true_edges_, view, frame_uniforms, entity, faces, settings);
-        glActiveTexture(GL_TEXTURE0 + kUnitSkin);
-        glBindTexture(GL_TEXTURE_2D, skin_texture);
-        draw_true_edges(entity, edges, silhouette_mode(plan), plan.creases, settings.edges);
-    }
+void AliasEdgeDrawer::end() {
     glBindVertexArray(0);
     glUseProgram(0);
     glActiveTexture(GL_TEXTURE0);
+}
+
+void AliasEdgeDrawer::draw_entity(const classic::FrameView& view,
+                                  const EdgeFrameUniforms& frame_uniforms,
+                                  const nqr_entity& entity, const classic::AliasModelGpu& faces,
+                                  const AliasEdgeMesh& edges, GLuint skin_texture,
+                                  const TechnicalSettings& settings) {
+    if (!program_ || !classic::has_known_prefix(&entity)) return;
+    pose_.resize(edges.vertex_count());
+    blend_alias_pose(faces.model(), entity, pose_.data());
+    begin_frame();
+    const EdgeSpan span = add_entity(entity, edges, pose_.data(), settings.edges);
+    upload();
+    begin(view, frame_uniforms, settings);
+    draw_entity(view, entity, faces, skin_texture, span);
+    end();
 }
 
 }  // namespace nq::npr::technical

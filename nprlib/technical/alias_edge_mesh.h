@@ -1,38 +1,59 @@
-// GPU side of an alias model's edges, built once at registration from the recovered adjacency
-// (adjacency::recover_adjacency): one vertex per MDL vertex carrying its skin coordinate
-// ((s + 0.5) / w, (t + 0.5) / h, front side of the seam), so a vertex shader finds k_d there
-// and the MDL vertex index is gl_VertexID (what pose_position()/pose_normal() take), and one
-// element buffer holding two index ranges:
-//   - the adjacency range: EdgeTable::triangles_adjacency, 6 MDL indices per mesh face, for
-//     GL_TRIANGLES_ADJACENCY (true silhouettes and creases);
-//   - the triangle range: the file's triangles, 3 MDL indices each, reversed to wind
-//     counter-clockwise seen from outside, for the back-face-line fallback (needs no adjacency);
-//   - the edge range: one GL_LINES_ADJACENCY primitive per mesh edge (face0's third corner,
-//     the edge's two ends, the neighbour's far corner), what the edge drawer draws: one
-//     geometry-shader invocation per edge, emitting at most one quad.
-// The adjacency verdict says whether the first range can be trusted.
+// An alias model's edges for the technical style, built once at registration from the recovered
+// adjacency (adjacency::recover_adjacency), and searched on the CPU every frame for the entity's
+// blended pose and the true eye (Gooch et al. 1999, Raskar 2001):
+//   - true edges, one record per mesh edge (face0's third corner, the edge's ends v0 and v1,
+//     the neighbour's far corner; faces wind counter-clockwise seen from outside, so face0 is
+//     (v0, v1, third) and the neighbour (v1, v0, far)). An edge is a silhouette where one face
+//     looks at the eye and the other does not; a crease where the faces turn by more than the
+//     crease angle (a ridge when convex, a valley when concave) and one of them is seen. Open
+//     borders (the far corner is face0's own third corner) outline from either side;
+//   - the paper's thick back-face lines, for models whose adjacency is not trustworthy: the
+//     edges of every back-facing triangle of the file (no adjacency needed), less those it
+//     shares, in the file's own indices and with opposite winding, with one other triangle that
+//     faces away too: such an edge lies on the far side of the model, where front faces hide it
+//     (only through a hole in an open model could it show).
+// The adjacency verdict says whether true edges can be trusted. No GL here: AliasEdgeDrawer
+// turns what find_edges returns into quads.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "adjacency/recovery_stats.h"
 #include "adjacency/verdict.h"
-#include "gl/handles.h"
 #include "nqr_renderer.h"
+#include "technical/edge_glsl.h"
+#include "technical/technical_settings.h"
 
 namespace nq::npr::technical {
 
+// What to look for on one model (plan_edge_query turns the settings into it).
+struct EdgeQuery {
+    bool silhouettes = false;     // true silhouettes from adjacency
+    bool creases = false;         // ridges and valleys (an edge that is a silhouette is none)
+    bool backface_lines = false;  // back-facing triangles' edges, in place of true silhouettes
+    float cos_crease = 0.5f;      // an edge is a crease when its normals' cosine is below this
+    bool any() const { return silhouettes || creases || backface_lines; }
+};
+
+struct FoundEdge {
+    uint32_t v0, v1;  // MDL vertex indices
+    EdgeKind kind;
+};
+
 class AliasEdgeMesh {
   public:
+    using Triangle = std::array<uint32_t, 3>;
+
     // Null with `error` set when the model cannot be read (see classic::validate_alias_model).
-    static std::unique_ptr<AliasEdgeMesh> create(gl::ObjectTracker* tracker,
-                                                 const nqr_alias_model& model, std::string& error);
+    static std::unique_ptr<AliasEdgeMesh> create(const nqr_alias_model& model, std::string& error);
 
     // The verdict: true silhouettes and creases are trustworthy for this model.
     bool clean() const { return verdict_.style == adjacency::EdgeStyle::true_edges; }
@@ -41,36 +62,40 @@ class AliasEdgeMesh {
     // The line adjacency::verdict_log_line gives: "adjacency: NAME: <style> (<figures>)".
     std::string verdict_line(const std::string& model_name) const;
 
-    GLuint vertex_array() const { return vertex_array_.id(); }
-    GLsizei adjacency_index_count() const { return adjacency_count_; }  // 6 per face
-    GLsizei triangle_index_count() const { return triangle_count_; }    // 3 per triangle
-    GLsizei edge_index_count() const { return edge_count_; }            // 4 per edge
-    const void* edge_indices_offset() const;
-    // Byte offset of the triangle range in the element buffer (for glDrawElements).
-    const void* triangle_indices_offset() const;
-    GLuint index_buffer() const { return indices_.id(); }
+    uint32_t vertex_count() const { return vertex_count_; }
+    size_t edge_count() const { return edges_.size(); }
+    // The file's usable triangles, counter-clockwise seen from outside.
+    std::span<const Triangle> triangles() const { return triangles_; }
+    // Per MDL vertex: its skin coordinate ((s + 0.5) / w, (t + 0.5) / h, front side of a seam).
+    std::span<const glm::vec2> skin_coords() const { return skin_coords_; }
 
-    // The edge range's primitives (4 MDL indices each) that can be a silhouette or a crease of
-    // `entity`'s blended pose seen from entity.eye_model: the geometry shader, which decides,
-    // then runs over tens of edges instead of every edge (llvmpipe runs geometry and vertex
-    // shading on one thread). Conservative: facing tests within a small tolerance of zero and
-    // creases within one degree of the threshold are kept. Writes into storage owned by the
-    // mesh (no allocation); valid until the next call.
-    std::span<const uint32_t> candidate_edges(const nqr_entity& entity, float cos_crease,
-                                              bool creases) const;
+    // Appends to `out` the edges `query` asks for on `pose` (vertex_count() model-space
+    // positions) seen from `eye` (model space). Each edge at most once.
+    void find_edges(const glm::vec3* pose, const glm::vec3& eye, const EdgeQuery& query,
+                    std::vector<FoundEdge>& out) const;
 
   private:
     AliasEdgeMesh() = default;
+    void find_true_edges(const glm::vec3* pose, const glm::vec3& eye, const EdgeQuery& query,
+                         std::vector<FoundEdge>& out) const;
+    void find_backface_lines(const glm::vec3* pose, const glm::vec3& eye,
+                             std::vector<FoundEdge>& out) const;
 
-    gl::VertexArray vertex_array_;
-    gl::Buffer skin_coords_, indices_;
-    GLsizei adjacency_count_ = 0, triangle_count_ = 0, edge_count_ = 0;
-    const nqr_alias_model* model_ = nullptr;    // valid until the model is released
-    std::vector<uint32_t> edge_prims_;          // the edge range, kept on the CPU
-    mutable std::vector<glm::vec3> positions_;  // scratch: the blended pose
-    mutable std::vector<uint32_t> candidates_;  // scratch: what candidate_edges returns
+    uint32_t vertex_count_ = 0;
+    std::vector<std::array<uint32_t, 4>> edges_;  // (third, v0, v1, far) per mesh edge
+    std::vector<Triangle> triangles_;
+    // Per triangle side k (from corner k to k + 1): the one triangle running that side the
+    // other way round, or -1 when there is none or the side has more than two triangles.
+    std::vector<std::array<int32_t, 3>> twins_;
+    mutable std::vector<uint8_t> facing_away_;  // scratch of find_backface_lines
+    std::vector<glm::vec2> skin_coords_;
     adjacency::RecoveryStats stats_;
     adjacency::Verdict verdict_;
 };
+
+// The settings' plan for one model: true silhouettes for clean models, back-face lines in their
+// place for unclean ones (or always / never, by setting); creases where the adjacency is trusted
+// (or wherever there is adjacency when back-face lines are refused altogether).
+EdgeQuery plan_edge_query(const AliasEdgeMesh& mesh, const EdgeSettings& settings);
 
 }  // namespace nq::npr::technical

@@ -18,6 +18,7 @@ constexpr char kHeader[] = "#version 330 core\n";
 constexpr char kVertexBody[] = R"(
 layout(location = 0) in uint a_pose_vertex;
 layout(location = 1) in vec2 a_uv;
+uniform sampler2D u_skin;
 uniform mat4 u_model;
 uniform mat4 u_view_projection;
 uniform mat3 u_normal_to_world;
@@ -26,7 +27,9 @@ out vec2 v_uv;
 out vec3 v_world_normal;
 out vec3 v_view_normal;
 out float v_height;
+flat out vec3 v_kd_average;
 void main() {
+    v_kd_average = skin_average(u_skin);
     vec3 position = pose_position(int(a_pose_vertex));
     vec3 normal = pose_normal(int(a_pose_vertex));
     gl_Position = u_view_projection * (u_model * vec4(position, 1.0));
@@ -42,6 +45,7 @@ in vec2 v_uv;
 in vec3 v_world_normal;
 in vec3 v_view_normal;
 in float v_height;
+flat in vec3 v_kd_average;
 uniform sampler2D u_skin;
 uniform sampler2D u_fullbright;
 uniform vec3 u_light_direction;
@@ -54,8 +58,8 @@ vec3 unit_or_up(vec3 v) {
     return len > 1e-6 ? v / len : vec3(0.0, 0.0, 1.0);
 }
 void main() {
-    if (texture(u_skin, v_uv).a < u_alpha_cutoff) discard;
-    vec3 kd = surface_kd(u_skin, v_uv, -1.0);
+    if (u_alpha_cutoff > 0.0 && texture(u_skin, v_uv).a < u_alpha_cutoff) discard;
+    vec3 kd = surface_kd_from(v_kd_average, u_skin, v_uv, -1.0);
     vec3 shaded = technical_shade(kd, unit_or_up(v_world_normal), u_light_direction, v_height);
     o_color = vec4(shaded + texture(u_fullbright, v_uv).rgb, u_alpha);
     o_normal = vec4(unit_or_up(v_view_normal) * 0.5 + 0.5, 1.0);
@@ -70,7 +74,8 @@ constexpr float kHoleyAlphaCutoff = 0.666f;  // as the classic drawer
 }  // namespace
 
 bool AliasFaceDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
-    const std::string vertex = std::string(kHeader) + classic::kAliasPoseLibrary + kVertexBody;
+    const std::string vertex =
+        std::string(kHeader) + classic::kAliasPoseLibrary + kShadingLibrary + kVertexBody;
     const std::string fragment = std::string(kHeader) + kShadingLibrary + kFragmentBody;
     gl::ProgramBuild build =
         gl::Program::build({"technical alias faces", vertex.c_str(), fragment.c_str()}, tracker);
@@ -100,14 +105,23 @@ void AliasFaceDrawer::set_light_direction(const nqr_entity& entity) {
     glUniform3fv(program_.location("u_light_direction"), 1, glm::value_ptr(direction));
 }
 
-void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_entity& entity,
-                                  const classic::AliasModelGpu& model, GLuint skin_texture,
-                                  GLuint fullbright_texture, const ShadingSettings& settings) {
-    if (!program_ || skin_texture == 0) return;
+void AliasFaceDrawer::begin(const classic::FrameView& view, const ShadingSettings& settings) {
     program_.use();
-    const glm::mat4 model_matrix = classic::mat4_from(entity.model_matrix);
     glUniformMatrix4fv(program_.location("u_view_projection"), 1, GL_FALSE,
                        glm::value_ptr(view.view_projection));
+    set_shading_uniforms(program_, settings);
+    add_fullbright_ = settings.mode != ShadingMode::object_id;
+    // Quake winds alias triangles clockwise seen from outside: cull the inside, as classic.
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CW);
+    glCullFace(GL_BACK);
+}
+
+void AliasFaceDrawer::draw(const classic::FrameView& view, const nqr_entity& entity,
+                           const classic::AliasModelGpu& model, GLuint skin_texture,
+                           GLuint fullbright_texture) {
+    if (!program_ || skin_texture == 0) return;
+    const glm::mat4 model_matrix = classic::mat4_from(entity.model_matrix);
     glUniformMatrix4fv(program_.location("u_model"), 1, GL_FALSE, entity.model_matrix);
     const glm::mat3 to_world = glm::inverseTranspose(glm::mat3(model_matrix));
     glUniformMatrix3fv(program_.location("u_normal_to_world"), 1, GL_FALSE,
@@ -115,7 +129,6 @@ void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_enti
     const glm::mat3 to_view = classic::normal_to_view(view, model_matrix);
     glUniformMatrix3fv(program_.location("u_normal_to_view"), 1, GL_FALSE, glm::value_ptr(to_view));
     classic::set_alias_pose_uniforms(program_, model, entity, kUnitPoses);
-    set_shading_uniforms(program_, settings);
     set_entity_light_uniforms(program_, entity);
     set_light_direction(entity);
     const float alpha = classic::entity_alpha(entity.alpha);
@@ -125,14 +138,9 @@ void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_enti
     glActiveTexture(GL_TEXTURE0 + kUnitSkin);
     glBindTexture(GL_TEXTURE_2D, skin_texture);
     glActiveTexture(GL_TEXTURE0 + kUnitFullbright);
-    // object_id draws flat colours only: no fullbright pixels on top.
-    const bool add_fullbright = fullbright_texture != 0 && settings.mode != ShadingMode::object_id;
+    const bool add_fullbright = fullbright_texture != 0 && add_fullbright_;
     glBindTexture(GL_TEXTURE_2D, add_fullbright ? fullbright_texture : black_.id());
     glBindVertexArray(model.vertex_array());
-    // Quake winds alias triangles clockwise seen from outside: cull the inside, as classic.
-    glEnable(GL_CULL_FACE);
-    glFrontFace(GL_CW);
-    glCullFace(GL_BACK);
     const bool translucent = alpha < 1.0f;
     if (translucent) {
         glEnable(GL_BLEND);
@@ -140,7 +148,13 @@ void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_enti
         glDepthMask(GL_FALSE);
     }
     glDrawElements(GL_TRIANGLES, model.index_count(), GL_UNSIGNED_INT, nullptr);
+    if (translucent) {
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+    }
+}
 
+void AliasFaceDrawer::end() {
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glFrontFace(GL_CCW);
@@ -148,6 +162,15 @@ void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_enti
     glBindVertexArray(0);
     glUseProgram(0);
     glActiveTexture(GL_TEXTURE0);
+}
+
+void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_entity& entity,
+                                  const classic::AliasModelGpu& model, GLuint skin_texture,
+                                  GLuint fullbright_texture, const ShadingSettings& settings) {
+    if (!program_ || skin_texture == 0) return;
+    begin(view, settings);
+    draw(view, entity, model, skin_texture, fullbright_texture);
+    end();
 }
 
 }  // namespace nq::npr::technical

@@ -21,9 +21,16 @@ class AliasFaceDrawer {
     bool init(gl::ObjectTracker* tracker, std::string& error);
     void reset();
 
-    // One entity's faces. The caller sets the depth range (view model) and the pass order;
-    // starts from and restores the classic drawers' state. fullbright_texture 0: none.
+    // A pass over many entities: begin (from the classic drawers' state; program, per-frame
+    // uniforms and face culling set once), draw per entity, end (restores that state). The
+    // caller sets the depth range (view model) and the pass order. fullbright_texture 0: none.
     // Metal bands run across the model-space height (z).
+    void begin(const classic::FrameView& view, const ShadingSettings& settings);
+    void draw(const classic::FrameView& view, const nqr_entity& entity,
+              const classic::AliasModelGpu& model, GLuint skin_texture, GLuint fullbright_texture);
+    void end();
+
+    // One entity: begin, draw, end.
     void draw_entity(const classic::FrameView& view, const nqr_entity& entity,
                      const classic::AliasModelGpu& model, GLuint skin_texture,
                      GLuint fullbright_texture, const ShadingSettings& settings);
@@ -33,6 +40,7 @@ class AliasFaceDrawer {
 
     gl::Program program_;
     gl::Texture black_;
+    bool add_fullbright_ = true;  // this pass's: object ids draw flat colours only
 };
 
 }  // namespace nq::npr::technical

@@ -36,7 +36,7 @@ void main() {
 // edge_glsl's library goes between the header and the body.
 constexpr char kGeometryHeader[] = R"(#version 330 core
 layout(lines) in;
-layout(triangle_strip, max_vertices = 4) out;
+layout(triangle_strip, max_vertices = 18) out;  // 2 (EDGE_MAX_PIECES + 1)
 )";
 
 constexpr char kGeometryBody[] = R"(
@@ -85,7 +85,7 @@ bool wants_edges(const EdgeSettings& settings) {
 
 bool BrushEdgeDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
     const std::string geometry =
-        std::string(kGeometryHeader) + kEdgeGeometryLibrary + kGeometryBody;
+        std::string(kGeometryHeader) + kEdgeLibrary + kEdgeGeometryLibrary + kGeometryBody;
     gl::ProgramBuild build = gl::Program::build(
         {"technical brush edges", kVertex, kEdgeFragment, geometry.c_str()}, tracker);
     if (!build.ok()) {

@@ -6,7 +6,8 @@
 
 namespace nq::npr::technical {
 
-const char* const kEdgeGeometryLibrary = R"(
+// Stage-neutral: uniforms, colours, and the quad's corners.
+const char* const kEdgeLibrary = R"(
 #define EDGE_SILHOUETTE 0
 #define EDGE_RIDGE 1
 #define EDGE_VALLEY 2
@@ -21,7 +22,6 @@ uniform float u_white_w;
 uniform float u_fade_distance;
 uniform vec3 u_edge_colors[4];
 uniform float u_edge_widths[4];
-out vec3 g_color;
 
 vec3 edge_color(int kind, vec3 shaded, float distance) {
     vec3 color = u_edge_colors[kind];
@@ -52,37 +52,94 @@ vec4 pulled_clip(vec3 view_position, float pull) {
     return u_projection * vec4(view_position * (1.0 - pull), 1.0);
 }
 
-void emit_edge(vec3 view0, vec3 view1, vec3 color0, vec3 color1, int kind) {
-    float half_width = 0.5 * u_edge_widths[kind] * u_width_scale;
-    float pull = pull_share(kind, half_width);
-    // Clip to the near plane (view space looks down -Z), where it lies once pulled.
+float edge_half_width(int kind) { return 0.5 * u_edge_widths[kind] * u_width_scale; }
+
+// Clips the segment view0-view1 (view space, GL axes: the eye at 0 looking down -Z) to the
+// near plane where it lies once pulled; t0/t1 say where the ends moved to along the segment
+// (for their colours). False when nothing of it is in front of the eye.
+bool clip_edge(inout vec3 view0, inout vec3 view1, float pull, out float t0, out float t1) {
     float limit = -u_z_near * 1.001 / (1.0 - pull);
     bool in0 = view0.z <= limit, in1 = view1.z <= limit;
-    if (!in0 && !in1) return;
+    t0 = 0.0;
+    t1 = 1.0;
+    if (!in0 && !in1) return false;
     if (!in0 || !in1) {
         float t = (limit - view0.z) / (view1.z - view0.z);
         vec3 cut = mix(view0, view1, t);
-        vec3 cut_color = mix(color0, color1, t);
-        if (!in0) { view0 = cut; color0 = cut_color; } else { view1 = cut; color1 = cut_color; }
+        if (!in0) { view0 = cut; t0 = t; } else { view1 = cut; t1 = t; }
     }
-    vec4 c0 = pulled_clip(view0, pull), c1 = pulled_clip(view1, pull);
+    return true;
+}
+
+// The quad's screen-space offsets for the segment from clip-space c0 to c1, in NDC per unit of
+// w: `side` across it and `cap` along it, each half_width pixels long; `pixels`: its length.
+void edge_offsets(vec4 c0, vec4 c1, float half_width, out vec2 side, out vec2 cap,
+                  out float pixels) {
     vec2 s0 = c0.xy / c0.w * 0.5 * u_viewport, s1 = c1.xy / c1.w * 0.5 * u_viewport;
     vec2 along = s1 - s0;
-    float len = length(along);
-    along = len > 1e-4 ? along / len : vec2(1.0, 0.0);
-    vec2 across = vec2(-along.y, along.x);
-    // Pixel offsets back to clip space: multiply by w and divide by the half viewport.
+    pixels = length(along);
+    along = pixels > 1e-4 ? along / pixels : vec2(1.0, 0.0);
     vec2 to_ndc = 2.0 / u_viewport;
-    vec2 side = across * half_width * to_ndc, cap = along * half_width * to_ndc;
-    g_color = color0;
-    gl_Position = vec4(c0.xy + (-cap - side) * c0.w, c0.zw); EmitVertex();
-    g_color = color0;
-    gl_Position = vec4(c0.xy + (-cap + side) * c0.w, c0.zw); EmitVertex();
-    g_color = color1;
-    gl_Position = vec4(c1.xy + (cap - side) * c1.w, c1.zw); EmitVertex();
-    g_color = color1;
-    gl_Position = vec4(c1.xy + (cap + side) * c1.w, c1.zw); EmitVertex();
+    side = vec2(-along.y, along.x) * half_width * to_ndc;
+    cap = along * half_width * to_ndc;
+}
+
+vec4 offset_clip(vec4 c, vec2 offset) { return vec4(c.xy + offset * c.w, c.zw); }
+
+// Corner `corner` of the quad from c0 to c1: 0 and 1 at c0, 2 and 3 at c1; even corners on one
+// side, odd on the other; square caps half a width long.
+vec4 edge_corner(vec4 c0, vec4 c1, float half_width, int corner) {
+    vec2 side, cap;
+    float pixels;
+    edge_offsets(c0, c1, half_width, side, cap, pixels);
+    vec2 sideways = (corner & 1) == 0 ? -side : side;
+    return corner < 2 ? offset_clip(c0, sideways - cap) : offset_clip(c1, sideways + cap);
+}
+)";
+
+// Geometry stage: emit_edge() writes one strip along the edge, cut into pieces at most
+// EDGE_PIECE_PIXELS long: a tile-based rasteriser (llvmpipe) bins a triangle into every tile
+// of its bounding box, so one long thin diagonal quad costs far more than a row of short ones.
+const char* const kEdgeGeometryLibrary = R"(
+#define EDGE_PIECE_PIXELS 64.0
+#define EDGE_MAX_PIECES 8
+out vec3 g_color;
+void emit_edge(vec3 view0, vec3 view1, vec3 color0, vec3 color1, int kind) {
+    float half_width = edge_half_width(kind);
+    float pull = pull_share(kind, half_width);
+    float t0, t1;
+    if (!clip_edge(view0, view1, pull, t0, t1)) return;
+    vec3 from = mix(color0, color1, t0), to = mix(color0, color1, t1);
+    vec4 c0 = pulled_clip(view0, pull), c1 = pulled_clip(view1, pull);
+    vec2 side, cap;
+    float pixels;
+    edge_offsets(c0, c1, half_width, side, cap, pixels);
+    int pieces = clamp(int(ceil(pixels / EDGE_PIECE_PIXELS)), 1, EDGE_MAX_PIECES);
+    for (int i = 0; i <= pieces; ++i) {
+        float t = float(i) / float(pieces);
+        vec4 c = i == 0 ? c0 : (i == pieces ? c1 : pulled_clip(mix(view0, view1, t), pull));
+        vec2 along = i == 0 ? -cap : (i == pieces ? cap : vec2(0.0));
+        g_color = mix(from, to, t);
+        gl_Position = offset_clip(c, along - side);
+        EmitVertex();
+        gl_Position = offset_clip(c, along + side);
+        EmitVertex();
+    }
     EndPrimitive();
+}
+)";
+
+// Vertex stage: each vertex is one corner of an edge's quad.
+const char* const kEdgeVertexLibrary = R"(
+out vec3 g_color;
+// This vertex's clip position: side `corner` (0 or 1) at the end `own`, the edge running to
+// `other` (view space). Off screen when nothing of the edge is in front of the eye.
+vec4 edge_corner_at(vec3 own, vec3 other, int kind, int corner) {
+    float half_width = edge_half_width(kind);
+    float pull = pull_share(kind, half_width);
+    float t0, t1;
+    if (!clip_edge(own, other, pull, t0, t1)) return vec4(2.0, 2.0, 2.0, 1.0);
+    return edge_corner(pulled_clip(own, pull), pulled_clip(other, pull), half_width, corner);
 }
 )";
 

@@ -78,7 +78,8 @@ glm::vec3 steepen_light(const glm::vec3& n, const glm::vec3& light_dir,
 }
 
 ShadowPasses build_shadow_passes(const ShadowPlane& plane, const glm::vec3& light_dir,
-                                 const glm::vec3& centre, const ShadowSettings& settings) {
+                                 const glm::vec3& centre, const ShadowSettings& settings,
+                                 float caster_radius) {
     ShadowPasses passes;
     const float light_length = glm::length(light_dir);
     if (!settings.enabled || !plane.found || !(light_length > kTiny)) return passes;
@@ -86,14 +87,19 @@ ShadowPasses build_shadow_passes(const ShadowPlane& plane, const glm::vec3& ligh
     glm::vec3 light = light_dir / light_length;
     if (!(glm::dot(n, light) > kTiny)) return passes;  // at or below the plane
     light = steepen_light(n, light, kMinShadowLightElevationDegrees);
+    passes.light = light;
 
     const glm::mat4 projection = planar_projection(n, plane.distance, light);
+    const glm::vec3 shadow_centre = glm::vec3(projection * glm::vec4(centre, 1.0f));
+    // A sphere's shadow is an ellipse with semi-axes r and r / dot(n, l).
+    passes.bounds_centre = shadow_centre;
+    passes.bounds_radius = caster_radius / glm::dot(n, light);
     if (!settings.penumbra) {
         passes.count = 1;
         passes.pass[0] = {projection, settings.alpha};
         return passes;
     }
-    const glm::vec3 shadow_centre = glm::vec3(projection * glm::vec4(centre, 1.0f));
+    passes.bounds_radius += std::abs(settings.penumbra_offset);
     const glm::vec3 sideways = glm::cross(n, along_plane(n, light));
     const glm::vec3 offset = settings.penumbra_offset * sideways;
     passes.count = 3;

@@ -34,6 +34,11 @@ struct ShadowPass {
 struct ShadowPasses {
     int count = 0;
     ShadowPass pass[3];
+    glm::vec3 light{0, 0, 1};  // unit, toward the light: the direction the passes project along
+    // A sphere on the plane holding every projection of a caster of radius caster_radius:
+    // whether the shadow can be on screen when the caster is not.
+    glm::vec3 bounds_centre{0};
+    float bounds_radius = 0;
 };
 
 // Lights closer to the plane than this are raised to it, so shadows stay finite.
@@ -45,8 +50,10 @@ inline constexpr float kMinShadowLightElevationDegrees = 15.0f;
 // projection of `centre`, at settings.alpha) and two penumbra projections shifted
 // +-penumbra_offset perpendicular to the light's direction along the plane, at penumbra_alpha.
 // Each world_to_plane maps world space onto the plane along the (steepened) light direction.
+// caster_radius bounds the caster about `centre` (for ShadowPasses' bounds only).
 ShadowPasses build_shadow_passes(const ShadowPlane& plane, const glm::vec3& light_dir,
-                                 const glm::vec3& centre, const ShadowSettings& settings);
+                                 const glm::vec3& centre, const ShadowSettings& settings,
+                                 float caster_radius = 0.0f);
 
 // The parallel projection onto the plane dot(n, x) = d along unit direction l (dot(n, l) > 0).
 glm::mat4 planar_projection(const glm::vec3& n, float d, const glm::vec3& l);

@@ -16,11 +16,19 @@ uniform float u_ambient, u_directional;
 uniform vec3 u_light_color;
 uniform vec3 u_object_color;
 
-vec3 surface_kd(sampler2D skin, vec2 uv, float lod) {
-    vec3 average = textureLod(skin, uv, 20.0).rgb;  // the 1x1 mip: the skin's mean colour
+vec3 skin_average(sampler2D skin) {
+    return textureLod(skin, vec2(0.5), 20.0).rgb;  // the 1x1 mip: the skin's mean colour
+}
+
+// k_d from the skin's average, blended toward the texel at uv (lod < 0: implicit lod).
+vec3 surface_kd_from(vec3 average, sampler2D skin, vec2 uv, float lod) {
     if (u_texture_blend <= 0.0) return average;
     vec3 texel = lod < 0.0 ? texture(skin, uv).rgb : textureLod(skin, uv, lod).rgb;
     return mix(average, texel, u_texture_blend);
+}
+
+vec3 surface_kd(sampler2D skin, vec2 uv, float lod) {
+    return surface_kd_from(skin_average(skin), skin, uv, lod);
 }
 
 vec3 gooch_tone(vec3 kd, float n_dot_l) {

@@ -30,6 +30,9 @@ namespace nq::npr::technical {
 //   uniform vec3 u_light_color;
 //   uniform vec3 u_object_color;                        object_id mode: the entity's colour
 //   vec3 surface_kd(sampler2D skin, vec2 uv, float lod)   k_d (lod < 0: implicit lod)
+//   vec3 skin_average(sampler2D skin)                   its average part (one per skin: a
+//                                                       vertex shader can pass it on flat)
+//   vec3 surface_kd_from(vec3 average, sampler2D skin, vec2 uv, float lod)
 //   vec3 technical_shade(vec3 kd, vec3 n, vec3 l, float height)
 //       n, l unit vectors in one space (l toward the light); height: a coordinate across the
 //       model (for metal bands), in model units.

@@ -1,21 +1,33 @@
-// Draws planar shadows of alias models: the posed model flattened onto the floor by each
-// ShadowPass's matrix, in the shadow colour, blended over the world already drawn.
+// Draws planar shadows of alias models: each caster's pose (blended once per frame on the CPU)
+// flattened onto its floor by each ShadowPass's matrix, in the shadow colour, blended over the
+// world already drawn.
+//   - A frame's shadows are gathered first (begin_frame, add_entity per caster: the light-facing
+//     triangles, projected on the CPU straight to clip space) and drawn together (draw): one
+//     draw per pass kind (the umbra or hard shadow, and each penumbra), whatever the number of
+//     casters, so the state is set once.
 //   - Depth-tested against the world without writing depth, pulled toward the eye by a polygon
 //     offset so the shadow neither z-fights its floor nor visibly floats above it.
-//   - A flattened model overlaps itself (front and back faces, folded limbs); the stencil keeps
-//     each pass from darkening a pixel twice: every pass draws where the stencil is not its own
-//     reference and writes that reference. References increase per pass through the frame; the
-//     stencil is cleared only before the first pass of a frame and when the 8-bit range wraps.
+//   - A flattened model overlaps itself (front and back faces, folded limbs): the stencil keeps
+//     each pass kind from darkening a pixel twice. Shadows of different casters merge the same
+//     way, as two shadows of one light do; the umbra and penumbra kinds still stack. The
+//     stencil is cleared once per frame, before the first kind.
 //   - Only colour attachment 0 is written (normals in a G-buffer stay the floor's).
 // The framebuffer needs a stencil buffer; without one overlapping triangles darken twice.
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
-#include "classic/alias_model_gpu.h"
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
 #include "classic/frame_view.h"
+#include "gl/handles.h"
 #include "gl/program.h"
+#include "gl/stream_buffer.h"
 #include "nqr_renderer.h"
+#include "technical/alias_edge_mesh.h"
 #include "technical/planar_shadow.h"
 #include "technical/technical_settings.h"
 
@@ -26,23 +38,37 @@ class ShadowDrawer {
     bool init(gl::ObjectTracker* tracker, std::string& error);
     void reset();
 
-    // Call once at the start of a frame's shadow drawing (resets the stencil reference scheme;
-    // the stencil is cleared before the frame's first pass).
+    // Empties the frame's batch.
     void begin_frame();
 
-    // The model (blended pose, model_matrix, then each pass's world_to_plane, then
-    // view_projection) in settings.color at each pass's alpha. Starts from and restores the
-    // classic drawers' state, stencil test off.
-    void draw_entity(const classic::FrameView& view, const nqr_entity& entity,
-                     const classic::AliasModelGpu& model, const ShadowPasses& passes,
-                     const ShadowSettings& settings);
+    // Adds one caster: `pose` (mesh.vertex_count() model-space positions) through
+    // entity.model_matrix, each pass's world_to_plane and view.view_projection, at each pass's
+    // alpha. Only triangles facing passes.light are kept: on a closed model the others project
+    // inside them.
+    void add_entity(const classic::FrameView& view, const nqr_entity& entity,
+                    const AliasEdgeMesh& mesh, const glm::vec3* pose, const ShadowPasses& passes);
+
+    // Draws what was added, in settings.color. Starts from and restores the classic drawers'
+    // state, stencil test off.
+    void draw(const ShadowSettings& settings);
+
+    size_t triangles_in_batch() const;
 
   private:
-    // The stencil reference for the next pass, clearing the stencil when none is left unused.
-    GLint next_stencil_reference();
+    struct Vertex {
+        glm::vec4 clip;
+        float alpha;
+    };
+    static constexpr int kKinds = 3;  // the umbra (or hard shadow) and two penumbrae
 
     gl::Program program_;
-    GLint next_reference_ = 0;  // 0: the stencil holds values from before; clear it first
+    gl::StreamBuffer vertex_stream_, index_stream_;
+    gl::VertexArray vertex_array_;
+    // Each caster's vertices once per pass (projected), and per pass kind the light-facing
+    // triangles as indices into them: a vertex is shaded once, not once per triangle.
+    std::vector<Vertex> vertices_;
+    std::array<std::vector<uint32_t>, kKinds> indices_;
+    std::vector<uint32_t> lit_;  // scratch: one caster's light-facing triangles
 };
 
 }  // namespace nq::npr::technical

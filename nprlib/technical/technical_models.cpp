@@ -27,7 +27,7 @@ void TechnicalModels::add(const nqr_model& model) {
 void TechnicalModels::add_alias(const nqr_model& model, TechnicalModel& out) {
     const std::string name = model.name ? model.name : "?";
     std::string error;
-    out.alias_edges = AliasEdgeMesh::create(tracker_, *model.alias, error);
+    out.alias_edges = AliasEdgeMesh::create(*model.alias, error);
     if (!out.alias_edges) {
         log_(NQR_LOG_WARNING, "technical: " + name + ": no edges: " + error);
         return;

@@ -2,25 +2,21 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "classic/abi_access.h"
 #include "classic/frame_view.h"
-#include "gl/texture_upload.h"
+#include "technical/alias_pose.h"
 #include "technical/planar_shadow.h"
 
 namespace nq::npr::technical {
 
+using classic::entity_in_view;
+using classic::frame_readable;
 using classic::has_known_prefix;
-
-struct TechnicalRenderer::AliasItem {
-    const nqr_entity* entity = nullptr;
-    const classic::AliasModelGpu* gpu = nullptr;
-    const classic::SkinImageGpu* image = nullptr;
-    const AliasEdgeMesh* edges = nullptr;
-    float radius = 0;
-};
 
 namespace {
 
@@ -70,14 +66,13 @@ bool TechnicalRenderer::init(const nqr_engine* engine, std::string* error) {
         !brush_edges_.init(&tracker_, message) || !shadows_.init(&tracker_, message)) {
         return fail(message, error);
     }
-    black_ = gl::create_solid_texture(&tracker_, 0, 0, 0, 0);
+    items_.reserve(256);
     initialised_ = true;
     return true;
 }
 
 void TechnicalRenderer::shutdown() {
     models_.clear();
-    black_.reset();
     shadows_.reset();
     brush_edges_.reset();
     alias_edges_.reset();
@@ -109,7 +104,7 @@ void TechnicalRenderer::pass_end() const {
 
 void TechnicalRenderer::draw_world(const nqr_frame* frame) {
     classic_.draw_world(frame);
-    if (!initialised_ || !has_known_prefix(frame) || !settings.edges.world_edges) return;
+    if (!initialised_ || !frame_readable(frame) || !settings.edges.world_edges) return;
     const TechnicalModel* world = models_.find(frame->world);
     classic::FrameView view;
     if (!world || !world->brush_edges || !classic::read_frame_view(frame, view)) return;
@@ -123,7 +118,7 @@ void TechnicalRenderer::draw_world(const nqr_frame* frame) {
 
 void TechnicalRenderer::draw_brush_entities(const nqr_frame* frame) {
     classic_.draw_brush_entities(frame);
-    if (!initialised_ || !has_known_prefix(frame) || !settings.edges.world_edges) return;
+    if (!initialised_ || !frame_readable(frame) || !settings.edges.world_edges) return;
     classic::FrameView view;
     if (!frame->brush_entities || frame->num_brush_entities == 0 ||
         !classic::read_frame_view(frame, view)) {
@@ -141,7 +136,7 @@ void TechnicalRenderer::draw_brush_entity_edges(const nqr_frame& frame,
     const EdgeFrameUniforms uniforms = edge_frame_uniforms(frame);
     for (uint32_t i = 0; i < frame.num_brush_entities; ++i) {
         const nqr_entity* entity = frame.brush_entities[i];
-        if (!has_known_prefix(entity) || entity->model == frame.world) continue;
+        if (!entity_in_view(entity) || entity->model == frame.world) continue;
         const TechnicalModel* model = models_.find(entity->model);
         if (!model || !model->brush_edges) continue;
         brush_edges_.draw_entity(view, uniforms, *entity, *model->brush_edges, model->first_surface,
@@ -151,9 +146,7 @@ void TechnicalRenderer::draw_brush_entity_edges(const nqr_frame& frame,
 
 // ------------------------------------------------------------------ alias models
 
-bool TechnicalRenderer::find_alias(const nqr_frame& frame, const nqr_entity* entity,
-                                   AliasItem& out) {
-    (void)frame;
+bool TechnicalRenderer::find_alias(const nqr_entity* entity, AliasItem& out) const {
     if (!has_known_prefix(entity)) return false;
     const classic::RegisteredModel* registered = classic_.models().find(entity->model);
     if (!registered || !registered->alias) return false;
@@ -163,37 +156,72 @@ bool TechnicalRenderer::find_alias(const nqr_frame& frame, const nqr_entity* ent
     if (!out.image) return false;
     const TechnicalModel* model = models_.find(entity->model);
     out.edges = model ? model->alias_edges.get() : nullptr;
-    out.radius = model ? model->radius : 0.0f;
+    out.radius = model ? model->radius * std::max(entity->scale, 1.0f) : 0.0f;
     return true;
 }
 
 void TechnicalRenderer::draw_alias_entities(const nqr_frame* frame) {
     classic::FrameView view;
-    if (!initialised_ || !has_known_prefix(frame) || !frame->alias_entities ||
+    if (!initialised_ || !frame_readable(frame) || !frame->alias_entities ||
         !classic::read_frame_view(frame, view)) {
         return;
     }
+    gather_alias_entities(*frame, view);
     classic::begin_classic_pass();
-    if (settings.shadows.enabled) {
+    if (shadows_.triangles_in_batch() > 0) {
         pass_begin("shadows");
-        draw_shadows(*frame, view);
+        shadows_.draw(settings.shadows);
         pass_end();
     }
     // Timed: the opaque models' faces and edges (nearly all of the work). Translucent models
     // and the view model, drawn after them, count toward the engine's own alias pass: every
     // timer marker costs a query, and on llvmpipe a flush.
+    const EdgeFrameUniforms edge_uniforms = edge_frame_uniforms(*frame);
     pass_begin("shading");
-    draw_faces(*frame, view, AliasPass::opaque);
+    draw_faces(view, AliasPass::opaque);
     pass_end();
     pass_begin("edges");
-    draw_alias_edges(*frame, view, AliasPass::opaque);
+    draw_alias_edges(view, edge_uniforms, AliasPass::opaque);
     pass_end();
-    draw_faces(*frame, view, AliasPass::translucent);
-    draw_alias_edges(*frame, view, AliasPass::translucent);
+    draw_faces(view, AliasPass::translucent);
+    draw_alias_edges(view, edge_uniforms, AliasPass::translucent);
     glDepthRange(0.0, kViewModelDepthMax);
-    draw_faces(*frame, view, AliasPass::view_model);
-    draw_alias_edges(*frame, view, AliasPass::view_model);
+    draw_faces(view, AliasPass::view_model);
+    draw_alias_edges(view, edge_uniforms, AliasPass::view_model);
     classic::end_classic_pass();
+}
+
+// One CPU walk over the frame's alias entities: each pose is blended once, then flattened into
+// the shadow batch and searched for edges; the entities on screen are listed for the passes.
+void TechnicalRenderer::gather_alias_entities(const nqr_frame& frame,
+                                              const classic::FrameView& view) {
+    items_.clear();
+    shadows_.begin_frame();
+    alias_edges_.begin_frame();
+    for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
+        AliasItem item;
+        if (!find_alias(frame.alias_entities[i], item)) continue;
+        const bool on_screen = entity_in_view(item.entity);
+        const ShadowPasses shadow = shadow_passes(item, view);
+        const bool edges = on_screen && item.edges && !edges_fully_faded(item, view);
+        if (!on_screen && shadow.count == 0) continue;
+        if ((shadow.count > 0 || edges) && item.edges) {
+            pose_.resize(std::max<size_t>(pose_.size(), item.edges->vertex_count()));
+            blend_alias_pose(item.gpu->model(), *item.entity, pose_.data());
+            if (shadow.count > 0) {
+                shadows_.add_entity(view, *item.entity, *item.edges, pose_.data(), shadow);
+            }
+            if (edges) {
+                item.edge_span =
+                    alias_edges_.add_entity(*item.entity, *item.edges, pose_.data(), settings.edges);
+            }
+        }
+        if (!on_screen) continue;
+        item.skin = classic_.alias_drawer().skin_texture(frame, *item.entity, *item.gpu, *item.image);
+        item.fullbright = item.image->fullbright ? item.image->fullbright.id() : 0;
+        items_.push_back(item);
+    }
+    alias_edges_.upload();
 }
 
 // Shadows fade out over the last quarter of tech_shadow_distance instead of popping away.
@@ -203,42 +231,40 @@ float TechnicalRenderer::shadow_distance_fade(float distance) const {
     return glm::clamp((far - distance) / (0.25f * far), 0.0f, 1.0f);
 }
 
-void TechnicalRenderer::draw_shadows(const nqr_frame& frame, const classic::FrameView& view) {
-    shadows_.begin_frame();
-    for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
-        AliasItem item;
-        if (!find_alias(frame, frame.alias_entities[i], item) ||
-            !in_pass(*item.entity, static_cast<int>(AliasPass::opaque))) {
-            continue;
-        }
-        const glm::vec3 origin = glm::make_vec3(item.entity->origin);
-        const float fade = shadow_distance_fade(glm::distance(origin, view.eye));
-        if (fade <= 0.0f) continue;
-        const ShadowPlane plane = find_shadow_plane(*engine_, origin, settings.shadows.max_drop);
-        if (!plane.found) continue;
-        ShadowPasses passes = build_shadow_passes(
-            plane, glm::make_vec3(item.entity->light.direction), origin, settings.shadows);
-        for (int p = 0; p < passes.count; ++p) passes.pass[p].alpha *= fade;
-        if (passes.count > 0) {
-            shadows_.draw_entity(view, *item.entity, *item.gpu, passes, settings.shadows);
-        }
+// The entity's shadow projections (count 0: none), faded with distance; casters off screen
+// keep theirs only when the shadow can be seen.
+ShadowPasses TechnicalRenderer::shadow_passes(const AliasItem& item,
+                                              const classic::FrameView& view) const {
+    ShadowPasses none;
+    if (!settings.shadows.enabled || !item.edges ||
+        !in_pass(*item.entity, static_cast<int>(AliasPass::opaque))) {
+        return none;
     }
+    const glm::vec3 origin = glm::make_vec3(item.entity->origin);
+    const float fade = shadow_distance_fade(glm::distance(origin, view.eye));
+    if (fade <= 0.0f) return none;
+    const ShadowPlane plane = find_shadow_plane(*engine_, origin, settings.shadows.max_drop);
+    if (!plane.found) return none;
+    ShadowPasses passes =
+        build_shadow_passes(plane, glm::make_vec3(item.entity->light.direction), origin,
+                            settings.shadows, item.radius);
+    if (!entity_in_view(item.entity) &&
+        classic::sphere_outside_view(view, passes.bounds_centre, passes.bounds_radius)) {
+        return none;
+    }
+    for (int p = 0; p < passes.count; ++p) passes.pass[p].alpha *= fade;
+    return passes;
 }
 
-void TechnicalRenderer::draw_faces(const nqr_frame& frame, const classic::FrameView& view,
-                                   AliasPass pass) {
-    for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
-        AliasItem item;
-        if (!find_alias(frame, frame.alias_entities[i], item) ||
-            !in_pass(*item.entity, static_cast<int>(pass))) {
-            continue;
-        }
-        const GLuint skin =
-            classic_.alias_drawer().skin_texture(frame, *item.entity, *item.gpu, *item.image);
-        const GLuint fullbright =
-            item.image->fullbright ? item.image->fullbright.id() : black_.id();
-        faces_.draw_entity(view, *item.entity, *item.gpu, skin, fullbright, settings.shading);
+void TechnicalRenderer::draw_faces(const classic::FrameView& view, AliasPass pass) {
+    bool begun = false;
+    for (const AliasItem& item : items_) {
+        if (!in_pass(*item.entity, static_cast<int>(pass))) continue;
+        if (!begun) faces_.begin(view, settings.shading);
+        begun = true;
+        faces_.draw(view, *item.entity, *item.gpu, item.skin, item.fullbright);
     }
+    if (begun) faces_.end();
 }
 
 // Past the blend threshold an edge has taken the model's colour: drawing it changes nothing.
@@ -249,20 +275,18 @@ bool TechnicalRenderer::edges_fully_faded(const AliasItem& item,
     return distance - item.radius > settings.edges.fade_distance;
 }
 
-void TechnicalRenderer::draw_alias_edges(const nqr_frame& frame, const classic::FrameView& view,
-                                         AliasPass pass) {
-    const EdgeFrameUniforms uniforms = edge_frame_uniforms(frame);
-    for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
-        AliasItem item;
-        if (!find_alias(frame, frame.alias_entities[i], item) || !item.edges ||
-            !in_pass(*item.entity, static_cast<int>(pass)) || edges_fully_faded(item, view)) {
+void TechnicalRenderer::draw_alias_edges(const classic::FrameView& view,
+                                         const EdgeFrameUniforms& uniforms, AliasPass pass) {
+    bool begun = false;
+    for (const AliasItem& item : items_) {
+        if (item.edge_span.edge_count == 0 || !in_pass(*item.entity, static_cast<int>(pass))) {
             continue;
         }
-        const GLuint skin =
-            classic_.alias_drawer().skin_texture(frame, *item.entity, *item.gpu, *item.image);
-        alias_edges_.draw_entity(view, uniforms, *item.entity, *item.gpu, *item.edges, skin,
-                                 settings);
+        if (!begun) alias_edges_.begin(view, uniforms, settings);
+        begun = true;
+        alias_edges_.draw_entity(view, *item.entity, *item.gpu, item.skin, item.edge_span);
     }
+    if (begun) alias_edges_.end();
 }
 
 }  // namespace nq::npr::technical

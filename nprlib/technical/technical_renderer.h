@@ -9,12 +9,16 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "classic/classic_renderer.h"
 #include "gl/object_tracker.h"
 #include "nqr_renderer.h"
 #include "technical/alias_edge_drawer.h"
 #include "technical/alias_face_drawer.h"
+#include "technical/planar_shadow.h"
 #include "technical/brush_edge_drawer.h"
 #include "technical/shadow_drawer.h"
 #include "technical/technical_models.h"
@@ -49,16 +53,27 @@ class TechnicalRenderer {
 
   private:
     enum class AliasPass { opaque, translucent, view_model };
-    struct AliasItem;  // what one alias entity needs to draw
+    // What one alias entity needs to draw this frame.
+    struct AliasItem {
+        const nqr_entity* entity = nullptr;
+        const classic::AliasModelGpu* gpu = nullptr;
+        const classic::SkinImageGpu* image = nullptr;
+        const AliasEdgeMesh* edges = nullptr;
+        float radius = 0;
+        GLuint skin = 0, fullbright = 0;
+        EdgeSpan edge_span;
+    };
 
     bool fail(const std::string& message, std::string* error);
     void log(int level, const std::string& text) const;
     void pass_begin(const char* name) const;
     void pass_end() const;
-    bool find_alias(const nqr_frame& frame, const nqr_entity* entity, AliasItem& out);
-    void draw_shadows(const nqr_frame& frame, const classic::FrameView& view);
-    void draw_faces(const nqr_frame& frame, const classic::FrameView& view, AliasPass pass);
-    void draw_alias_edges(const nqr_frame& frame, const classic::FrameView& view, AliasPass pass);
+    bool find_alias(const nqr_entity* entity, AliasItem& out) const;
+    void gather_alias_entities(const nqr_frame& frame, const classic::FrameView& view);
+    ShadowPasses shadow_passes(const AliasItem& item, const classic::FrameView& view) const;
+    void draw_faces(const classic::FrameView& view, AliasPass pass);
+    void draw_alias_edges(const classic::FrameView& view, const EdgeFrameUniforms& uniforms,
+                          AliasPass pass);
     bool edges_fully_faded(const AliasItem& item, const classic::FrameView& view) const;
     float shadow_distance_fade(float distance) const;
     void draw_brush_entity_edges(const nqr_frame& frame, const classic::FrameView& view);
@@ -71,7 +86,8 @@ class TechnicalRenderer {
     AliasEdgeDrawer alias_edges_;
     BrushEdgeDrawer brush_edges_;
     ShadowDrawer shadows_;
-    gl::Texture black_;
+    std::vector<AliasItem> items_;  // this frame's alias entities on screen
+    std::vector<glm::vec3> pose_;   // scratch: one entity's blended pose
     bool initialised_ = false;
 };
 

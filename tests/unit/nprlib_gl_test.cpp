@@ -252,6 +252,24 @@ TEST_F(GlHelpersTest, OrphaningStreamBufferRings) {
     exercise_stream(stream);
 }
 
+// Region starts are multiples of kGranularity, so only its divisors can be promised there; a
+// 32-byte record pushed right after a 40-byte one still starts on a multiple of 32.
+TEST_F(GlHelpersTest, StreamBufferAlignsToDivisorsOfItsGranularityOnly) {
+    for (StreamBuffer::Mode mode : {StreamBuffer::Mode::automatic, StreamBuffer::Mode::orphaning}) {
+        StreamBuffer stream;
+        ASSERT_TRUE(stream.create(&tracker_, 4096, mode));
+        const std::vector<uint8_t> data(40, 7);
+        EXPECT_EQ(stream.push(data.data(), data.size(), 40), StreamBuffer::kNoSpace);
+        EXPECT_EQ(stream.push(data.data(), data.size(), 512), StreamBuffer::kNoSpace);
+        for (int i = 0; i < 200; ++i) {  // through several regions and wraps
+            ASSERT_NE(stream.push(data.data(), data.size(), 4), StreamBuffer::kNoSpace);
+            const size_t offset = stream.push(data.data(), 32, 32);
+            ASSERT_NE(offset, StreamBuffer::kNoSpace);
+            EXPECT_EQ(offset % 32, 0u) << i;
+        }
+    }
+}
+
 TEST_F(GlHelpersTest, StreamBufferReserveWritesInPlace) {
     StreamBuffer stream;
     ASSERT_TRUE(stream.create(&tracker_, 4096));

@@ -3,6 +3,7 @@
 // distance fade), constant pixel width and hidden-edge removal, checked on real pixels of
 // synthetic models drawn on Mesa llvmpipe.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "nprlib_test_support.h"
 #include "technical/alias_edge_drawer.h"
 #include "technical/alias_edge_mesh.h"
+#include "technical/alias_pose.h"
 #include "technical/technical_settings.h"
 
 namespace nq::npr::test {
@@ -22,6 +24,9 @@ namespace {
 using technical::AliasEdgeDrawer;
 using technical::AliasEdgeMesh;
 using technical::BackfaceLines;
+using technical::EdgeKind;
+using technical::EdgeQuery;
+using technical::FoundEdge;
 using technical::EdgeColorMode;
 using technical::TechnicalSettings;
 
@@ -253,7 +258,7 @@ class TechnicalEdgesTest : public GlSuiteTest<TechnicalEdgesTest> {
         model->faces =
             classic::AliasModelGpu::create(&tracker_, source, engine_.palette.data(), error);
         EXPECT_NE(model->faces, nullptr) << error;
-        model->edges = AliasEdgeMesh::create(&tracker_, source, error);
+        model->edges = AliasEdgeMesh::create(source, error);
         EXPECT_NE(model->edges, nullptr) << error;
         models_.push_back(std::move(model));
         return *models_.back();
@@ -324,9 +329,9 @@ nqr_camera corner_camera() {
 TEST_F(TechnicalEdgesTest, MeshHoldsAdjacencyAndTrianglesAndTheVerdict) {
     TestModel& cube = add_model([](AliasBuilder& b) { make_cube(b, kGrey); });
     EXPECT_TRUE(cube.edges->clean());
-    EXPECT_EQ(cube.edges->adjacency_index_count(), 12 * 6);
-    EXPECT_EQ(cube.edges->triangle_index_count(), 12 * 3);
-    EXPECT_EQ(cube.edges->edge_index_count(), 18 * 4);  // one lines-adjacency primitive per edge
+    EXPECT_EQ(cube.edges->edge_count(), 18u);  // 12 box edges, 6 face diagonals
+    EXPECT_EQ(cube.edges->triangles().size(), 12u);
+    EXPECT_EQ(cube.edges->vertex_count(), cube.builder.build()->num_vertices);
     EXPECT_EQ(cube.edges->stats().mesh.edges, 18u);
     const std::string line = cube.edges->verdict_line("progs/cube.mdl");
     EXPECT_NE(line.find("progs/cube.mdl"), std::string::npos) << line;
@@ -334,34 +339,67 @@ TEST_F(TechnicalEdgesTest, MeshHoldsAdjacencyAndTrianglesAndTheVerdict) {
 
     TestModel& broken = add_model([](AliasBuilder& b) { make_broken_cube(b, kGrey); });
     EXPECT_FALSE(broken.edges->clean()) << broken.edges->verdict_line("broken");
-    EXPECT_EQ(broken.edges->triangle_index_count(), 15 * 3);
+    EXPECT_EQ(broken.edges->triangles().size(), 15u);
 }
 
-// The CPU pre-selection: the cube (model space -8..8) seen from a corner direction shows three
-// faces. Its 12 box edges: 3 between two visible faces (creases), 6 on the outline (silhouettes),
-// 3 between hidden faces; the 6 face diagonals are flat. Counted independently of the shader.
-TEST_F(TechnicalEdgesTest, CandidateEdgesAreTheOutlineAndTheVisibleCreases) {
+// The edges of `model`'s first pose seen from `eye` (model space), counted by kind.
+std::array<int, 4> found_kinds(TestModel& model, glm::vec3 eye, const EdgeQuery& query) {
+    const nqr_alias_model& source = *model.builder.build();
+    nqr_entity entity = make_entity(1);
+    std::vector<glm::vec3> pose(source.num_vertices);
+    technical::blend_alias_pose(source, entity, pose.data());
+    std::vector<FoundEdge> found;
+    model.edges->find_edges(pose.data(), eye, query, found);
+    std::array<int, 4> kinds{};
+    for (const FoundEdge& e : found) ++kinds[static_cast<int>(e.kind)];
+    return kinds;
+}
+
+// The cube (model space -8..8) seen from a corner direction shows three faces. Its 12 box
+// edges: 3 between two visible faces (creases, convex: ridges), 6 on the outline
+// (silhouettes), 3 between hidden faces; the 6 face diagonals are flat. Counted independently.
+TEST_F(TechnicalEdgesTest, FoundEdgesAreTheOutlineAndTheVisibleCreases) {
     TestModel& cube = add_model([](AliasBuilder& b) { make_cube(b, kGrey); });
-    nqr_entity entity{};
-    entity.size = sizeof entity;
-    const float eye[3] = {100.0f, 70.0f, 40.0f};
-    std::copy_n(eye, 3, entity.eye_model);
-    const float cos60 = 0.5f;
-    EXPECT_EQ(cube.edges->candidate_edges(entity, cos60, true).size(), 9u * 4);
-    EXPECT_EQ(cube.edges->candidate_edges(entity, cos60, false).size(), 6u * 4);
+    const glm::vec3 corner_eye(100.0f, 70.0f, 40.0f);
+    EdgeQuery query;
+    query.silhouettes = query.creases = true;
+    query.cos_crease = 0.5f;  // 60 degrees
+    EXPECT_EQ(found_kinds(cube, corner_eye, query), (std::array<int, 4>{6, 3, 0, 0}));
+    query.creases = false;
+    EXPECT_EQ(found_kinds(cube, corner_eye, query), (std::array<int, 4>{6, 0, 0, 0}));
     // Above 90 degrees no box edge is a crease: the outline alone.
-    EXPECT_EQ(cube.edges->candidate_edges(entity, -0.2f, true).size(), 6u * 4);
-    // Straight at one face: its 4 edges are the outline, nothing else faces the eye.
-    const float front[3] = {200.0f, 0.0f, 0.0f};
-    std::copy_n(front, 3, entity.eye_model);
-    EXPECT_EQ(cube.edges->candidate_edges(entity, cos60, true).size(), 4u * 4);
+    query.creases = true;
+    query.cos_crease = -0.2f;
+    EXPECT_EQ(found_kinds(cube, corner_eye, query), (std::array<int, 4>{6, 0, 0, 0}));
+    // Straight at one face: its 4 edges are the outline (the side faces are edge-on, not seen),
+    // nothing else faces the eye.
+    query.cos_crease = 0.5f;
+    EXPECT_EQ(found_kinds(cube, {200.0f, 0.0f, 0.0f}, query), (std::array<int, 4>{4, 0, 0, 0}));
+    // Silhouettes off: an outline edge turns by 90 degrees, so it is a crease then.
+    query.silhouettes = false;
+    EXPECT_EQ(found_kinds(cube, corner_eye, query)[0], 0);
+    EXPECT_EQ(found_kinds(cube, corner_eye, query)[1], 9);
+}
+
+// Back-face lines: the three hidden faces' six triangles have 18 sides; the 3 hidden box edges
+// and the 3 hidden diagonals lie between two hidden triangles (behind the model): left out.
+// The 6 outline edges remain, once each.
+TEST_F(TechnicalEdgesTest, BackfaceLinesKeepTheEdgesOfHiddenTrianglesThatCanShow) {
+    TestModel& cube = add_model([](AliasBuilder& b) { make_cube(b, kGrey); });
+    EdgeQuery query;
+    query.backface_lines = true;
+    EXPECT_EQ(found_kinds(cube, {100.0f, 70.0f, 40.0f}, query), (std::array<int, 4>{0, 0, 0, 6}));
+    // The broken cube's fin: three triangles on one side have no twins, so those of them that
+    // face away keep all their sides.
+    TestModel& broken = add_model([](AliasBuilder& b) { make_broken_cube(b, kGrey); });
+    EXPECT_GT(found_kinds(broken, {100.0f, 70.0f, 40.0f}, query)[3], 6);
 }
 
 TEST_F(TechnicalEdgesTest, UnreadableModelIsRefusedWithAReason) {
     nqr_alias_model empty{};
     empty.size = sizeof empty;
     std::string error;
-    EXPECT_EQ(AliasEdgeMesh::create(&tracker_, empty, error), nullptr);
+    EXPECT_EQ(AliasEdgeMesh::create(empty, error), nullptr);
     EXPECT_FALSE(error.empty());
 }
 

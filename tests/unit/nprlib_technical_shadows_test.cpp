@@ -13,7 +13,9 @@
 #include "classic/frame_view.h"
 #include "gl/program.h"
 #include "nprlib_test_support.h"
+#include "technical/alias_edge_mesh.h"
 #include "technical/alias_face_drawer.h"
+#include "technical/alias_pose.h"
 #include "technical/planar_shadow.h"
 #include "technical/shadow_drawer.h"
 #include "technical/technical_settings.h"
@@ -413,6 +415,8 @@ class TechnicalShadowsTest : public GlSuiteTest<TechnicalShadowsTest> {
         std::string error;
         gpu_ = classic::AliasModelGpu::create(&tracker_, *b.build(), palette_.data(), error);
         ASSERT_TRUE(gpu_) << error;
+        mesh_ = technical::AliasEdgeMesh::create(*b.build(), error);
+        ASSERT_TRUE(mesh_) << error;
         entity_ = make_entity(1, glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, height}));
         light_from(light_);
     }
@@ -434,11 +438,19 @@ class TechnicalShadowsTest : public GlSuiteTest<TechnicalShadowsTest> {
         floor_.draw(view());
     }
 
-    void draw_shadow(const ShadowSettings& settings) {
-        const glm::vec3 origin = glm::make_vec3(entity_.origin);
+    // Adds `entity`'s shadow (the model's pose blended here) to the frame's batch.
+    void add_shadow(const nqr_entity& entity, const ShadowSettings& settings) {
+        const glm::vec3 origin = glm::make_vec3(entity.origin);
         const ShadowPlane plane = find_shadow_plane(engine_, origin, settings.max_drop);
         const ShadowPasses passes = build_shadow_passes(plane, light_, origin, settings);
-        shadows_.draw_entity(view(), entity_, *gpu_, passes, settings);
+        std::vector<glm::vec3> pose(mesh_->vertex_count());
+        technical::blend_alias_pose(gpu_->model(), entity, pose.data());
+        shadows_.add_entity(view(), entity, *mesh_, pose.data(), passes);
+    }
+
+    void draw_shadow(const ShadowSettings& settings) {
+        add_shadow(entity_, settings);
+        shadows_.draw(settings);
     }
 
     void draw_faces() {
@@ -536,6 +548,7 @@ class TechnicalShadowsTest : public GlSuiteTest<TechnicalShadowsTest> {
     nqr_engine engine_{};
     AliasBuilder builder_;
     std::unique_ptr<classic::AliasModelGpu> gpu_;
+    std::unique_ptr<technical::AliasEdgeMesh> mesh_;
     std::vector<Box> boxes_;
     nqr_entity entity_ = make_entity(1);
     glm::vec3 light_ = glm::normalize(glm::vec3(0.6f, 0.0f, 1.0f));  // shadow toward the eye
@@ -645,22 +658,29 @@ TEST_F(TechnicalShadowsTest, StencilLeftFromBeforeTheFrameIsCleared) {
     EXPECT_EQ(gl_->pixels(), expected);
 }
 
-TEST_F(TechnicalShadowsTest, StencilReferencesWrapWithinAFrame) {
+// Two casters whose shadows overlap: like two shadows of one light, the overlap is as dark as
+// either shadow alone, and both shadows are drawn.
+TEST_F(TechnicalShadowsTest, ShadowsOfTwoCastersMergeWhereTheyOverlap) {
     upload_cubes({{{0, 0, 0}, {16, 16, 16}}}, 16.0f);
-    const ShadowSettings s;
-    const std::vector<Rgb> expected = render(&s);
-    // 254 one-pass shadows elsewhere (far behind the camera) use up the references but one:
-    // the stencil is cleared again between our entity's umbra and its penumbra passes.
+    const ShadowSettings hard = hard_shadows();
+    const std::vector<Rgb> unshadowed = render(nullptr, false);
+    const std::vector<Rgb> one = render(&hard, false);
+    nqr_entity second = entity_;
+    second.number = 2;
+    second.origin[1] += 8.0f;  // half a cube aside: the shadows overlap by half
+    second.model_matrix[13] += 8.0f;
     draw_floor();
     shadows_.begin_frame();
-    const ShadowSettings hard = hard_shadows();
-    technical::ShadowPasses elsewhere;
-    elsewhere.count = 1;
-    elsewhere.pass[0].world_to_plane = glm::translate(glm::mat4(1.0f), {-5000.0f, 0.0f, 0.0f});
-    for (int i = 0; i < 254; ++i) shadows_.draw_entity(view(), entity_, *gpu_, elsewhere, hard);
-    draw_shadow(s);
-    draw_faces();
-    EXPECT_EQ(gl_->pixels(), expected);
+    add_shadow(entity_, hard);
+    add_shadow(second, hard);
+    shadows_.draw(hard);
+    const std::vector<Rgb> two = gl_->pixels();
+    const auto one_colours = shadow_colours(one, unshadowed);
+    const auto two_colours = shadow_colours(two, unshadowed);
+    ASSERT_EQ(one_colours.size(), 1u);
+    ASSERT_EQ(two_colours.size(), 1u);
+    EXPECT_EQ(two_colours.begin()->first, one_colours.begin()->first);  // as dark as one
+    EXPECT_GT(two_colours.begin()->second, one_colours.begin()->second + 20);  // more floor
 }
 
 TEST_F(TechnicalShadowsTest, RestoresTheClassicStateWithStencilOff) {
