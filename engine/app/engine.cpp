@@ -44,6 +44,7 @@ Engine::~Engine() {
     dispatch_.reset();
     plugins_.reset();
     hud_.reset();
+    gamma_pass_.reset();
     console_drawer_.reset();
     gpu_timers_.shutdown();
     throttle_.release();
@@ -86,6 +87,10 @@ bool Engine::start() {
         {"r_viewmodel_quake", "0", kCvarArchive,
          "1: raise the weapon with the status bar's size, as GLQuake did (0: as QuakeSpasm)", 0.0f,
          1.0f});
+    cvars_.gamma = host_.cvars().register_cvar(
+        {"gamma", "1", kCvarArchive,
+         "brightness: each colour becomes colour^gamma (below 1 brighter; 1 costs nothing)", 0.3f,
+         3.0f});
 
     mount_game_data();
     if (!open_window()) return false;
@@ -102,6 +107,11 @@ bool Engine::start() {
         print("console: " + drawer.error().message);
     }
     create_hud();
+    if (auto gamma = GammaPass::create()) {
+        gamma_pass_.emplace(std::move(gamma.value()));
+    } else {
+        print("gamma: " + gamma.error().message);
+    }
     gpu_timers_.init(true);
 
     HostServicesWiring wiring;
@@ -303,6 +313,10 @@ void Engine::render(double frame_time) {
         render_showroom(real_time, static_cast<float>(frame_time));
     }
     if (console_drawer_) console_drawer_->draw(*console_);
+    if (gamma_pass_) {
+        gamma_pass_->apply(cvars_.gamma->value(), window_->drawable_width(),
+                           window_->drawable_height());
+    }
     if (timed) gpu_timers_.end_frame();
     window_->swap();
     throttle_.frame_submitted();

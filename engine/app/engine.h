@@ -3,8 +3,8 @@
 // (a demo's level, or the showroom), and runs the frame loop:
 //
 //   events -> command buffer -> demo (client state) -> scene (nqr_frame) -> plugin hooks
-//   -> view tints and status bar (hud) -> console -> swap (and wait while the driver has too
-//   many frames queued)
+//   -> view tints and status bar (hud) -> console -> gamma -> swap (and wait while the driver
+//   has too many frames queued)
 //   -> timedemo statistics
 #pragma once
 
@@ -30,6 +30,7 @@
 #include "plugin/plugin_host.h"
 #include "video/frame_stats.h"
 #include "video/frame_throttle.h"
+#include "video/gamma_pass.h"
 #include "video/gpu_pass_timers.h"
 #include "video/video_window.h"
 
@@ -41,6 +42,7 @@ struct EngineCvars {
     Cvar* host_maxfps = nullptr;
     Cvar* showroom_time = nullptr;
     Cvar* viewmodel_quake = nullptr;
+    Cvar* gamma = nullptr;
 };
 
 class Engine {
@@ -102,6 +104,7 @@ private:
     std::unique_ptr<Console> console_;
     std::optional<ConsoleDrawer> console_drawer_;
     std::unique_ptr<Hud> hud_;
+    std::optional<GammaPass> gamma_pass_;
     std::unique_ptr<HostServices> services_;
     std::unique_ptr<PluginHost> plugins_;
     std::unique_ptr<RenderDispatch> dispatch_;
