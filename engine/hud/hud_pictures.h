@@ -34,7 +34,8 @@ inline constexpr int kWeaponInHand = 1;       // weapons[1]: inv2_*, the one in 
 inline constexpr int kWeaponFlashFrames = 5;  // weapons[2..6]: inva1_* .. inva5_*, picked up
 inline constexpr int kFaceHealthSteps = 5;    // faces[0] face5 (near death) .. [4] face1
 
-// The ids of the pictures, by what they show.
+// The ids of the pictures, by what they show. (In a HudPictures that loaded nothing, every id
+// resolves to no picture.)
 struct HudPictureIds {
     PictureId sbar = kNoPicture, ibar = kNoPicture, scorebar = kNoPicture;
     PictureId disc = kNoPicture;  // the armour icon while invulnerable

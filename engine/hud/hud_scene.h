@@ -4,13 +4,13 @@
 //   intermission  the intermission screen (intermission.h), nothing else
 //   finale        the finale picture
 //   otherwise     the crosshair, then -- except during a cutscene -- the status bar canvas:
-//                 the inventory (viewsize < 110), the status bar or, while dead or holding
-//                 +showscores, the scorebar (viewsize < 120), and in deathmatch the mini
-//                 scoreboard (and the ranking instead of the status bar while dead or
-//                 holding +showscores).
+//                 the inventory (viewsize < 110); the scorebar while dead or holding
+//                 +showscores (whatever the viewsize, as in Quake), else the status bar
+//                 (viewsize < 120); in deathmatch also the ranking with the scorebar and the
+//                 mini scoreboard beside the bars.
 //
-// The status bar is drawn over the full 3D view: with scr_sbaralpha < 1 (QuakeSpasm's 0.75
-// by default) QuakeSpasm does not shrink the view for it either.
+// The 3D view is never shrunk for the bars: they are drawn over it, as QuakeSpasm draws its
+// translucent bar (scr_sbaralpha < 1, 0.75 by default).
 #pragma once
 
 #include "client/client_state.h"
