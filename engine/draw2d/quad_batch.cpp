@@ -1,8 +1,14 @@
 #include "draw2d/quad_batch.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace nq {
+
+uint8_t unit_to_byte(float value) {
+    if (!(value > 0)) return 0;  // also NaN
+    return static_cast<uint8_t>(std::lround(std::min(value, 1.0f) * 255.0f));
+}
 
 QuadBatch::QuadBatch(size_t capacity_quads)
     : vertices_(std::max<size_t>(capacity_quads, 1) * kVerticesPerQuad) {}

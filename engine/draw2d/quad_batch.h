@@ -19,6 +19,9 @@ struct Colour {
     friend bool operator==(const Colour&, const Colour&) = default;
 };
 
+// A 0..1 colour channel or opacity as a byte (rounded; clamped; NaN counts as 0).
+uint8_t unit_to_byte(float value);
+
 // How a quad takes its colour from the bound texture (QuadVertex::sampling).
 enum QuadSampling : uint8_t {
     kSampleNone = 0,          // a solid colour

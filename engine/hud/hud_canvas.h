@@ -20,6 +20,8 @@ namespace nq {
 inline constexpr int kVirtualWidth = 320;
 inline constexpr int kStatusBarHeight = 24;        // one bar: sbar, ibar or scorebar
 inline constexpr int kStatusBarCanvasHeight = 48;  // the inventory above the status bar
+inline constexpr float kInventoryTop = 0;          // rows of the status bar canvas
+inline constexpr float kStatusBarTop = kStatusBarHeight;
 inline constexpr int kMenuHeight = 200;
 inline constexpr int kCharacterSize = 8;  // conchars glyphs, in virtual pixels
 // `viewsize` thresholds: below 110 the inventory shows, below 120 the status bar.

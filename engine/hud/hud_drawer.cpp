@@ -1,19 +1,8 @@
 #include "hud/hud_drawer.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include "draw2d/rgba_texture.h"
 
 namespace nq {
-namespace {
-
-uint8_t to_byte(float value) {
-    if (!(value > 0)) return 0;  // also NaN
-    return static_cast<uint8_t>(std::lround(std::min(value, 1.0f) * 255.0f));
-}
-
-}  // namespace
 
 Result<HudDrawer> HudDrawer::create() {
     Result<QuadRenderer> renderer = QuadRenderer::create(kHudQuadCapacity);
@@ -39,7 +28,8 @@ void HudDrawer::draw(const ClientState& client, const ScreenBlend& blend, const 
                      bool with_hud) {
     drawn_ = false;
     const int width = frame.screen.width, height = frame.screen.height;
-    Colour tint{to_byte(blend.r), to_byte(blend.g), to_byte(blend.b), to_byte(blend.a)};
+    Colour tint{unit_to_byte(blend.r), unit_to_byte(blend.g), unit_to_byte(blend.b),
+                unit_to_byte(blend.a)};
     bool bars = with_hud && atlas_ && hud_has_content(client, frame, pictures_);
     if ((tint.a == 0 && !bars) || width <= 0 || height <= 0) return;
 

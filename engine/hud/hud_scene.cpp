@@ -1,8 +1,5 @@
 #include "hud/hud_scene.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include "hud/intermission.h"
 #include "hud/scoreboard.h"
 #include "hud/status_bar.h"
@@ -13,17 +10,12 @@ namespace {
 constexpr uint8_t kCrosshairGlyph = '+';
 constexpr float kCrosshairOffset = -kCharacterSize / 2.0f;  // the glyph's centre on the centre
 
-uint8_t alpha_byte(float alpha) {
-    if (!(alpha > 0)) return 0;  // also NaN
-    return static_cast<uint8_t>(std::lround(std::min(alpha, 1.0f) * 255.0f));
-}
-
 void build_status_bar_canvas(const ClientState& client, const HudFrame& frame,
                              const HudPictures& pictures, QuadBatch& batch) {
     const HudSettings& settings = frame.settings;
     bool deathmatch = client.level().game_type == kGameTypeDeathmatch;
     HudCanvas canvas = HudCanvas::status_bar(batch, pictures, frame.screen, deathmatch);
-    uint8_t alpha = alpha_byte(settings.bar_alpha);
+    uint8_t alpha = unit_to_byte(settings.bar_alpha);
 
     if (settings.viewsize < kViewsizeNoInventory) {
         draw_inventory(canvas, client, alpha);
@@ -31,7 +23,7 @@ void build_status_bar_canvas(const ClientState& client, const HudFrame& frame,
     }
     bool dead = client.player().stats[kStatHealth] <= 0;
     if (settings.show_scores || dead) {
-        canvas.picture(pictures.ids().scorebar, 0, kStatusBarHeight, alpha);
+        canvas.picture(pictures.ids().scorebar, 0, kStatusBarTop, alpha);
         draw_solo_scoreboard(canvas, client, frame.real_time);
         if (deathmatch) {
             draw_deathmatch_ranking(HudCanvas::menu(batch, pictures, frame.screen), client);

@@ -9,7 +9,6 @@
 namespace nq {
 namespace {
 
-constexpr float kStatusBarTop = kStatusBarHeight;
 constexpr uint8_t kLeftBracket = 16;  // conchars: the brackets around the viewer's frags
 constexpr uint8_t kRightBracket = 17;
 constexpr uint8_t kViewerMarker = 12;  // the ranking's arrow at the viewer's line

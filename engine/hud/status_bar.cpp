@@ -9,10 +9,7 @@
 namespace nq {
 namespace {
 
-// Rows of the status bar canvas.
-constexpr float kInventoryTop = 0;
-constexpr float kInventoryIconTop = 8;
-constexpr float kStatusBarTop = kStatusBarHeight;
+constexpr float kInventoryIconTop = 8;  // weapons, items and sigils below the ammo counts
 
 // Columns of the status bar.
 constexpr float kArmorIconX = 0;

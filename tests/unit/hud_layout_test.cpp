@@ -25,8 +25,8 @@ using namespace test;
 
 constexpr int kW = 320;
 constexpr int kH = 200;
-constexpr float kBarTop = kH - 24;        // the status bar's row at scale 1
-constexpr float kInventoryTop = kH - 48;  // the inventory's
+constexpr float kBarRow = kH - 24;        // the status bar's row at scale 1
+constexpr float kInventoryRow = kH - 48;  // the inventory's
 
 // The quads showing picture `id` (by its atlas region).
 std::vector<EmittedQuad> quads_of(const std::vector<EmittedQuad>& quads,
@@ -179,7 +179,7 @@ TEST(HudPicturesLoading, OddPicturesAreRefusedAndTheRestDrawn) {
     ASSERT_FALSE(client.apply(player_data(100, 100, 10, kItemShotgun | kItemShells)));
     std::vector<EmittedQuad> quads = hud_quads(client, hud_frame(kW, kH, 100), pictures);
     ASSERT_EQ(quads.size(), 1u);
-    EXPECT_TRUE(drawn_at(quads, pictures, pictures.ids().sbar, 0, kBarTop));
+    EXPECT_TRUE(drawn_at(quads, pictures, pictures.ids().sbar, 0, kBarRow));
 }
 
 TEST(HudPicturesLoading, NoPicturesDrawNothing) {
@@ -221,21 +221,21 @@ TEST_F(HudLayout, StatusBarNumbersFaceAndIconsAtQuakesPlaces) {
     std::vector<EmittedQuad> quads = hud_quads(client, hud_frame(kW, kH, 110), pictures());
     const auto& white = ids().numbers[kWhiteNumbers];
     const auto& red = ids().numbers[kRedNumbers];
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().sbar, 0, kBarTop));
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().sbar, 0, kBarRow));
     // Armour "200" in the field from x 24; health " 57" from 136 (right-aligned); ammo "  8"
     // from 248, red (10 or less).
-    EXPECT_TRUE(drawn_at(quads, pictures(), white[2], 24, kBarTop));
+    EXPECT_TRUE(drawn_at(quads, pictures(), white[2], 24, kBarRow));
     EXPECT_EQ(quads_of(quads, pictures(), white[0]).size(), 2u);
-    EXPECT_TRUE(drawn_at(quads, pictures(), white[0], 48, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), white[0], 72, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), white[5], 160, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), white[7], 184, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), red[8], 296, kBarTop));
+    EXPECT_TRUE(drawn_at(quads, pictures(), white[0], 48, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), white[0], 72, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), white[5], 160, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), white[7], 184, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), red[8], 296, kBarRow));
     EXPECT_TRUE(quads_of(quads, pictures(), white[8]).empty());
     // 57 / 20 = 2: the third face of five (face3), no pain.
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().faces[2][0], 112, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().armor[1], 0, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().ammo[0], 224, kBarTop));
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().faces[2][0], 112, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().armor[1], 0, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().ammo[0], 224, kBarRow));
     // viewsize 110: no inventory.
     EXPECT_TRUE(quads_of(quads, pictures(), ids().ibar).empty());
 }
@@ -246,13 +246,13 @@ TEST_F(HudLayout, LowValuesTurnRedAndInvulnerabilityShows666) {
     ASSERT_FALSE(client.apply(player_data(25, 26, 11, kItemInvulnerability)));
     std::vector<EmittedQuad> quads = hud_quads(client, hud_frame(kW, kH, 110), pictures());
     const auto& red = ids().numbers[kRedNumbers];
-    EXPECT_TRUE(drawn_at(quads, pictures(), red[6], 24, kBarTop));  // 666, armour's field
-    EXPECT_TRUE(drawn_at(quads, pictures(), red[6], 72, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().disc, 0, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), red[2], 160, kBarTop));  // health 25: red
-    EXPECT_TRUE(drawn_at(quads, pictures(), red[5], 184, kBarTop));
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().numbers[0][1], 272, kBarTop));  // ammo 11
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().face_invulnerable, 112, kBarTop));
+    EXPECT_TRUE(drawn_at(quads, pictures(), red[6], 24, kBarRow));  // 666, armour's field
+    EXPECT_TRUE(drawn_at(quads, pictures(), red[6], 72, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().disc, 0, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), red[2], 160, kBarRow));  // health 25: red
+    EXPECT_TRUE(drawn_at(quads, pictures(), red[5], 184, kBarRow));
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().numbers[0][1], 272, kBarRow));  // ammo 11
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().face_invulnerable, 112, kBarRow));
 }
 
 TEST_F(HudLayout, ViewsizeDecidesWhichBarsShow) {
@@ -307,8 +307,8 @@ TEST_F(HudLayout, InventoryShowsOwnedWeaponsAmmoCountsItemsAndSigils) {
                                           kItemRocketLauncher)));
     client.set_time(12.0);  // the pickup flashes are over
     std::vector<EmittedQuad> quads = hud_quads(client, hud_frame(kW, kH, 100), pictures());
-    const float icons = kInventoryTop + 8;
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().ibar, 0, kInventoryTop));
+    const float icons = kInventoryRow + 8;
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().ibar, 0, kInventoryRow));
     EXPECT_TRUE(drawn_at(quads, pictures(), ids().weapons[kWeaponOwned][0], 0, icons));
     EXPECT_TRUE(drawn_at(quads, pictures(), ids().weapons[kWeaponInHand][5], 120, icons));
     EXPECT_TRUE(drawn_at(quads, pictures(), ids().weapons[kWeaponOwned][6], 144, icons));
@@ -320,11 +320,11 @@ TEST_F(HudLayout, InventoryShowsOwnedWeaponsAmmoCountsItemsAndSigils) {
     // 25 shells in the small digits (conchars 18 + digit) at x (6 * 0 + 2) * 8 + 2 and
     // (6 * 0 + 3) * 8 + 2; no leading blank drawn.
     std::vector<PlacedGlyph> placed = glyphs(quads, pictures());
-    EXPECT_TRUE(has_glyph(placed, 18 + 2, 18, kInventoryTop));
-    EXPECT_TRUE(has_glyph(placed, 18 + 5, 26, kInventoryTop));
+    EXPECT_TRUE(has_glyph(placed, 18 + 2, 18, kInventoryRow));
+    EXPECT_TRUE(has_glyph(placed, 18 + 5, 26, kInventoryRow));
     // Nails, rockets, cells are 0: one "0" each, in their columns' third place.
-    EXPECT_TRUE(has_glyph(placed, 18, (6 * 1 + 3) * 8 + 2, kInventoryTop));
-    EXPECT_TRUE(has_glyph(placed, 18, (6 * 3 + 3) * 8 + 2, kInventoryTop));
+    EXPECT_TRUE(has_glyph(placed, 18, (6 * 1 + 3) * 8 + 2, kInventoryRow));
+    EXPECT_TRUE(has_glyph(placed, 18, (6 * 3 + 3) * 8 + 2, kInventoryRow));
     EXPECT_EQ(placed.size(), 5u);
 }
 
@@ -384,17 +384,17 @@ TEST_F(HudLayout, DeadPlayersSeeTheScoreboardInsteadOfTheStatusBar) {
     ASSERT_FALSE(client.apply(svc::UpdateStat{kStatTotalMonsters, 12}));
     ASSERT_FALSE(client.apply(svc::UpdateStat{kStatMonsters, 3}));
     std::vector<EmittedQuad> quads = hud_quads(client, hud_frame(kW, kH, 120), pictures());
-    EXPECT_TRUE(drawn_at(quads, pictures(), ids().scorebar, 0, kBarTop));
+    EXPECT_TRUE(drawn_at(quads, pictures(), ids().scorebar, 0, kBarRow));
     EXPECT_TRUE(quads_of(quads, pictures(), ids().sbar).empty());
     std::vector<PlacedGlyph> placed = glyphs(quads, pictures());
     // "Kills: 3/12" from x 8 on the bar's second text row; the title "The Test Level
     // (test1)" (22 characters) centred on its first.
-    EXPECT_TRUE(has_glyph(placed, 'K', 8, kBarTop + 12));
-    EXPECT_TRUE(has_glyph(placed, '3', 8 + 7 * 8, kBarTop + 12));
-    EXPECT_TRUE(has_glyph(placed, 'T', 160 - 22 * 4, kBarTop + 4));
-    EXPECT_TRUE(has_glyph(placed, '1', 160 - 22 * 4 + 20 * 8, kBarTop + 4));
+    EXPECT_TRUE(has_glyph(placed, 'K', 8, kBarRow + 12));
+    EXPECT_TRUE(has_glyph(placed, '3', 8 + 7 * 8, kBarRow + 12));
+    EXPECT_TRUE(has_glyph(placed, 'T', 160 - 22 * 4, kBarRow + 4));
+    EXPECT_TRUE(has_glyph(placed, '1', 160 - 22 * 4 + 20 * 8, kBarRow + 4));
     // "Secrets: 0/0" ends at x 312.
-    EXPECT_TRUE(has_glyph(placed, '0', 312 - 8, kBarTop + 12));
+    EXPECT_TRUE(has_glyph(placed, '0', 312 - 8, kBarRow + 12));
 }
 
 svc::UpdateName name(int client, std::string text) {
