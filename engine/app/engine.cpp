@@ -43,6 +43,8 @@ Engine::~Engine() {
     demo_.reset();
     dispatch_.reset();
     plugins_.reset();
+    hud_.reset();
+    gamma_pass_.reset();
     console_drawer_.reset();
     gpu_timers_.shutdown();
     throttle_.release();
@@ -81,6 +83,14 @@ bool Engine::start() {
         {"showroom_time", "-1", 0,
          "showroom clock in seconds: -1 follows the wall clock, >= 0 holds the scene still", -1.0f,
          1.0e6f});
+    cvars_.viewmodel_quake = host_.cvars().register_cvar(
+        {"r_viewmodel_quake", "0", kCvarArchive,
+         "1: raise the weapon with the status bar's size, as GLQuake did (0: as QuakeSpasm)", 0.0f,
+         1.0f});
+    cvars_.gamma = host_.cvars().register_cvar(
+        {"gamma", "1", kCvarArchive,
+         "brightness: each colour becomes colour^gamma (below 1 brighter; 1 costs nothing)", 0.3f,
+         3.0f});
 
     mount_game_data();
     if (!open_window()) return false;
@@ -95,6 +105,12 @@ bool Engine::start() {
         }
     } else {
         print("console: " + drawer.error().message);
+    }
+    create_hud();
+    if (auto gamma = GammaPass::create()) {
+        gamma_pass_.emplace(std::move(gamma.value()));
+    } else {
+        print("gamma: " + gamma.error().message);
     }
     gpu_timers_.init(true);
 
@@ -169,6 +185,15 @@ void Engine::mount_game_data() {
     for (const auto& w : vfs_->warnings()) print("warning: " + w);
     game_data_ = load_game_data(&*vfs_);
     for (const auto& w : game_data_.warnings) print("warning: " + w);
+}
+
+void Engine::create_hud() {
+    hud_ = std::make_unique<Hud>(host_);
+    const Wad* gfx_wad = game_data_.gfx_wad ? &*game_data_.gfx_wad : nullptr;
+    const Palette* palette = game_data_.palette ? &*game_data_.palette : nullptr;
+    for (const std::string& line : hud_->load_pictures(gfx_wad, palette, vfs_ ? &*vfs_ : nullptr)) {
+        print(line);
+    }
 }
 
 bool Engine::open_window() {
@@ -288,6 +313,10 @@ void Engine::render(double frame_time) {
         render_showroom(real_time, static_cast<float>(frame_time));
     }
     if (console_drawer_) console_drawer_->draw(*console_);
+    if (gamma_pass_) {
+        gamma_pass_->apply(cvars_.gamma->value(), window_->drawable_width(),
+                           window_->drawable_height());
+    }
     if (timed) gpu_timers_.end_frame();
     window_->swap();
     throttle_.frame_submitted();
@@ -303,10 +332,15 @@ void Engine::render_demo(double real_time, float frame_time) {
     ViewSettings settings;
     settings.contents_at = &contents_at;
     settings.contents_user = const_cast<Bsp*>(level.world_bsp());
+    settings.view_model_lift =
+        cvars_.viewmodel_quake->value() != 0 ? view_model_lift_for(hud_->viewsize()) : 0.0f;
     ViewResult view = compute_view(demo_->client(), view_state_, settings);
     const nqr_frame& frame =
         scene_.build(level, demo_->client(), view, camera_for(view), real_time, frame_time);
     dispatch_->draw(frame);
+    // Engine-drawn, whatever the plugin: the tints over the 3D view, then the status bar.
+    hud_->draw(demo_->client(), view.eye_contents, window_->drawable_width(),
+               window_->drawable_height(), real_time);
 }
 
 void Engine::render_showroom(double real_time, float frame_time) {

@@ -3,7 +3,8 @@
 // (a demo's level, or the showroom), and runs the frame loop:
 //
 //   events -> command buffer -> demo (client state) -> scene (nqr_frame) -> plugin hooks
-//   -> console -> swap (and wait while the driver has too many frames queued)
+//   -> view tints and status bar (hud) -> console -> gamma -> swap (and wait while the driver
+//   has too many frames queued)
 //   -> timedemo statistics
 #pragma once
 
@@ -25,9 +26,11 @@
 #include "host/command_line.h"
 #include "host/host_core.h"
 #include "host/launch_options.h"
+#include "hud/hud.h"
 #include "plugin/plugin_host.h"
 #include "video/frame_stats.h"
 #include "video/frame_throttle.h"
+#include "video/gamma_pass.h"
 #include "video/gpu_pass_timers.h"
 #include "video/video_window.h"
 
@@ -38,6 +41,8 @@ struct EngineCvars {
     Cvar* fov = nullptr;
     Cvar* host_maxfps = nullptr;
     Cvar* showroom_time = nullptr;
+    Cvar* viewmodel_quake = nullptr;
+    Cvar* gamma = nullptr;
 };
 
 class Engine {
@@ -60,6 +65,7 @@ private:
     // engine.cpp
     void mount_game_data();
     bool open_window();
+    void create_hud();  // after the window: the HUD's pictures go to the GPU
     void load_initial_plugin();
     void frame();
     void render(double frame_time);
@@ -97,6 +103,8 @@ private:
     FrameThrottle throttle_;  // after window_: goes while the context is still there
     std::unique_ptr<Console> console_;
     std::optional<ConsoleDrawer> console_drawer_;
+    std::unique_ptr<Hud> hud_;
+    std::optional<GammaPass> gamma_pass_;
     std::unique_ptr<HostServices> services_;
     std::unique_ptr<PluginHost> plugins_;
     std::unique_ptr<RenderDispatch> dispatch_;

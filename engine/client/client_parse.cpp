@@ -1,6 +1,8 @@
 // Applying decoded server messages to the client state: dispatch, level setup and the
 // player's own data. Entity messages are in entity_messages.cpp, effects in temp_entities.cpp.
+#include <algorithm>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 
@@ -11,6 +13,24 @@ namespace {
 
 template <class T, class... Ts>
 constexpr bool is_one_of = (std::is_same_v<T, Ts> || ...);
+
+// Whether `text` (console commands, separated by newlines or ';') holds the command "bf".
+bool has_bonus_flash_command(std::string_view text) {
+    constexpr std::string_view kBonusFlashCommand = "bf";
+    constexpr std::string_view kSeparators = "\n;";
+    constexpr std::string_view kBlanks = " \t\r";
+    while (!text.empty()) {
+        size_t end = std::min(text.find_first_of(kSeparators), text.size());
+        std::string_view command = text.substr(0, end);
+        size_t first = command.find_first_not_of(kBlanks);
+        if (first != std::string_view::npos) {
+            command = command.substr(first, command.find_last_not_of(kBlanks) - first + 1);
+            if (command == kBonusFlashCommand) return true;
+        }
+        text.remove_prefix(std::min(end + 1, text.size()));
+    }
+    return false;
+}
 
 std::string describe_index(const char* message, const char* what, int value, int limit) {
     return std::string(message) + ": " + what + " " + std::to_string(value) + " outside 0.." +
@@ -79,7 +99,9 @@ std::optional<std::string> ClientState::apply(const ServerMessage& message) {
             } else if constexpr (std::is_same_v<T, svc::CenterPrint>) {
                 center_prints_.push_back(m.text);
             } else if constexpr (std::is_same_v<T, svc::StuffText>) {
-                stuff_text_.push_back(m.text);
+                on_stuff_text(m.text);
+            } else if constexpr (std::is_same_v<T, svc::Damage>) {
+                flashes_.damage(m.armor, m.blood, time_);
             } else if constexpr (std::is_same_v<T, svc::SetPause>) {
                 paused_ = m.paused != 0;
             } else if constexpr (std::is_same_v<T, svc::KilledMonster>) {
@@ -97,8 +119,8 @@ std::optional<std::string> ClientState::apply(const ServerMessage& message) {
             } else if constexpr (std::is_same_v<T, svc::Fog>) {
                 fog_ = m;
             }
-            // Sounds, CD tracks, damage, the bonus flash, the sell screen and nops change
-            // nothing the client draws: they are only counted.
+            // Sounds, CD tracks, the sell screen and nops change nothing the client draws:
+            // they are only counted.
             return std::nullopt;
         },
         message);
@@ -127,6 +149,12 @@ void ClientState::on_client_data(const svc::ClientData& m) {
     for (int i = 0; i < 3; ++i) p.punch_angles[i] = static_cast<float>(m.punch_angle[i]);
     p.message_velocity[1] = p.message_velocity[0];
     for (int i = 0; i < 3; ++i) p.message_velocity[0][i] = static_cast<float>(m.velocity[i]);
+    for (int bit = 0; bit < kItemBits; ++bit) {
+        uint32_t mask = uint32_t{1} << bit;
+        bool picked_up = (static_cast<uint32_t>(m.items) & mask) != 0 &&
+                         (static_cast<uint32_t>(p.items) & mask) == 0;
+        if (picked_up) p.item_times[static_cast<size_t>(bit)] = time_;
+    }
     p.items = m.items;
     p.on_ground = m.on_ground();
     p.in_water = m.in_water();
@@ -172,6 +200,13 @@ std::optional<std::string> ClientState::on_stat(const svc::UpdateStat& m) {
 ScoreboardEntry* ClientState::score_entry(int client) {
     if (client < 0 || static_cast<size_t>(client) >= scoreboard_.size()) return nullptr;
     return &scoreboard_[static_cast<size_t>(client)];
+}
+
+void ClientState::on_stuff_text(const std::string& text) {
+    // Servers flash the screen on a pickup by stuffing "bf" into the client's console. It is
+    // the one stuffed command the client acts on itself: the engine runs none of them.
+    if (has_bonus_flash_command(text)) flashes_.bonus(time_);
+    stuff_text_.push_back(text);
 }
 
 void ClientState::on_intermission(Intermission kind, const std::string* text) {

@@ -47,6 +47,7 @@ void ClientState::clear_for_new_level() {
     intermission_ = Intermission::None;
     completed_time_ = 0;
     paused_ = false;
+    flashes_.clear();
     skybox_.clear();
     fog_ = {};
     particles_.clear();

@@ -22,10 +22,12 @@
 #include "client/client_entity.h"
 #include "client/client_random.h"
 #include "client/dynamic_lights.h"
+#include "client/items.h"
 #include "client/lightstyles.h"
 #include "client/model_info.h"
 #include "client/particle_effects.h"
 #include "client/particle_system.h"
+#include "client/screen_flashes.h"
 #include "client/temp_entity_buffer.h"
 #include "formats/server_message.h"
 
@@ -53,7 +55,6 @@ enum Stat : int {
     kStatSecrets = 13,
     kStatMonsters = 14,
 };
-inline constexpr int32_t kItemInvisibility = 1 << 19;
 
 enum class LerpMode {
     Interpolate,  // playback: entities and view angles blend between the last two messages
@@ -71,6 +72,8 @@ struct ClientSettings {
     bool explosion_sprites = false;
 };
 
+inline constexpr int kGameTypeDeathmatch = 1;  // LevelInfo::game_type (0: single player, coop)
+
 struct LevelInfo {
     int protocol = 0;
     uint32_t protocol_flags = 0;
@@ -86,6 +89,9 @@ struct PlayerState {
     std::array<Vec3, 2> message_velocity{};  // [0] latest clientdata, [1] the one before
     Vec3 velocity{};                         // interpolated for this frame
     int32_t items = 0;
+    // Client time at which each items bit was last switched on (Quake's item_gettime): the
+    // inventory flashes a weapon for a second after it is picked up.
+    std::array<double, kItemBits> item_times{};
     bool on_ground = false;
     bool in_water = false;
     int weapon_alpha = 0;  // encoded as decode_alpha() expects
@@ -169,6 +175,8 @@ class ClientState {
     Intermission intermission() const { return intermission_; }
     double completed_time() const { return completed_time_; }
     bool paused() const { return paused_; }
+    // Damage and bonus flashes and the pain face (svc_damage, the stuffed "bf" command).
+    const ScreenFlashes& flashes() const { return flashes_; }
 
     // ---- effects
     const LightStyles& light_styles() const { return light_styles_; }
@@ -204,6 +212,7 @@ class ClientState {
     ScoreboardEntry* score_entry(int client);  // nullptr when outside 0..max_clients-1
     std::optional<std::string> on_stat(const svc::UpdateStat& m);
     void on_intermission(Intermission kind, const std::string* text);
+    void on_stuff_text(const std::string& text);
 
     // entity_messages.cpp
     std::optional<std::string> on_baseline(int number, const EntityState& state, bool has_alpha);
@@ -261,6 +270,7 @@ class ClientState {
     Intermission intermission_ = Intermission::None;
     double completed_time_ = 0;
     bool paused_ = false;
+    ScreenFlashes flashes_;
     std::string skybox_;
     svc::Fog fog_;
 

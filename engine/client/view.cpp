@@ -123,4 +123,12 @@ ViewResult compute_view(const ClientState& client, ViewState& state, const ViewS
     return view;
 }
 
+float view_model_lift_for(float viewsize) {
+    // Quake keeps roughly as much of the weapon in sight as the status bar leaves visible.
+    if (viewsize == 110.0f || viewsize == 90.0f) return 1.0f;
+    if (viewsize == 100.0f) return 2.0f;
+    if (viewsize == 80.0f) return 0.5f;
+    return 0.0f;
+}
+
 }  // namespace nq

@@ -29,7 +29,8 @@ struct ViewSettings {
     float roll_speed = 200.0f;
     bool smooth_stairs = true;
     bool draw_view_model = true;
-    // Lifts the weapon so that as much of it shows as at Quake's default screen size (100).
+    // Lifts the weapon so that as much of it shows as at Quake's default screen size (100);
+    // view_model_lift_for(viewsize) gives Quake's lift for other screen sizes.
     float view_model_lift = 2.0f;
     // The map's contents at a point (kContents* values), or null.
     int (*contents_at)(void* user, const Vec3& point) = nullptr;
@@ -65,6 +66,10 @@ struct ViewResult {
 
 ViewResult compute_view(const ClientState& client, ViewState& state,
                         const ViewSettings& settings = {});
+
+// How far Quake raises the weapon at screen size `viewsize` (the `viewsize` cvar): 2 units at
+// 100, 1 at 110 and 90, 0.5 at 80, none at 120 or any other size.
+float view_model_lift_for(float viewsize);
 
 // The vertical bob of the eye for the horizontal speed of `velocity` at client time `time`.
 float view_bob(const ViewSettings& settings, double time, const Vec3& velocity);

@@ -59,14 +59,8 @@ Result<RgbaImage> conchars_to_rgba(std::span<const uint8_t> pixels, const Palett
                      "expected " + std::to_string(kFontPixelCount) + " pixels, got " +
                          std::to_string(pixels.size())};
     }
-    RgbaImage image = blank_font_image();
-    for (size_t i = 0; i < pixels.size(); ++i) {
-        uint8_t index = pixels[i];
-        uint8_t alpha = index == kConcharsTransparentIndex ? 0 : 255;
-        put_pixel(image, static_cast<int>(i % kFontImageSize), static_cast<int>(i / kFontImageSize),
-                  palette.colors[index], alpha);
-    }
-    return image;
+    return indexed_to_rgba(kFontImageSize, kFontImageSize, pixels, palette,
+                           kConcharsTransparentIndex);
 }
 
 Result<RgbaImage> load_conchars_font(const Wad& gfx_wad, const Palette& palette) {
@@ -80,18 +74,6 @@ Result<RgbaImage> load_conchars_font(const Wad& gfx_wad, const Palette& palette)
                          std::to_string(pic->height) + ", expected 128x128"};
     }
     return conchars_to_rgba(pic->pixels, palette);
-}
-
-RgbaImage pic_to_rgba(const Pic& pic, const Palette& palette) {
-    RgbaImage image{pic.width, pic.height,
-                    std::vector<uint8_t>(static_cast<size_t>(pic.width) * pic.height * 4)};
-    for (int y = 0; y < pic.height; ++y) {
-        for (int x = 0; x < pic.width; ++x) {
-            uint8_t index = pic.at(x, y);
-            put_pixel(image, x, y, palette.colors[index], index == kTransparentIndex ? 0 : 255);
-        }
-    }
-    return image;
 }
 
 const RgbaImage& fallback_font() {

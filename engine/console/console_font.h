@@ -10,22 +10,17 @@
 #include <vector>
 
 #include "common/result.h"
+#include "draw2d/quad_batch.h"
+#include "draw2d/rgba_image.h"
 #include "formats/lmp.h"
 #include "formats/palette.h"
 #include "formats/wad.h"
 
 namespace nq {
 
-inline constexpr int kFontImageSize = kConcharsSize;  // 128
-inline constexpr int kFontGlyphsPerRow = 16;
+inline constexpr int kFontImageSize = kConcharsSize;              // 128
+inline constexpr int kFontGlyphsPerRow = kFontSheetGlyphsPerRow;  // 16
 inline constexpr uint8_t kConcharsTransparentIndex = 0;
-
-// Rows top first, 4 bytes per pixel (straight alpha).
-struct RgbaImage {
-    int width = 0;
-    int height = 0;
-    std::vector<uint8_t> rgba;
-};
 
 // Conchars indices (128*128 of them; fewer or more is an error) through the palette; index 0
 // is transparent.
@@ -33,9 +28,6 @@ Result<RgbaImage> conchars_to_rgba(std::span<const uint8_t> pixels, const Palett
 
 // Finds "conchars" in gfx.wad, decodes it and colours it.
 Result<RgbaImage> load_conchars_font(const Wad& gfx_wad, const Palette& palette);
-
-// A qpic (e.g. gfx/conback.lmp) through the palette; index 255 is transparent.
-RgbaImage pic_to_rgba(const Pic& pic, const Palette& palette);
 
 // The built-in font: printable ASCII in light grey, the same glyphs gold in the upper half.
 const RgbaImage& fallback_font();

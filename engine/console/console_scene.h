@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "console/console.h"
-#include "console/quad_batch.h"
+#include "draw2d/quad_batch.h"
 
 namespace nq {
 

@@ -15,7 +15,7 @@
 #include "console/console_font.h"
 #include "console/console_scene.h"
 #include "console/fallback_font_sheet.h"
-#include "console/quad_batch.h"
+#include "draw2d/quad_batch.h"
 #include "formats/palette.h"
 #include "formats/wad.h"
 #include "host/host_core.h"
@@ -181,12 +181,12 @@ TEST(QuadBatch, FlushesWhenFullAndPlacesGlyphs) {
     EXPECT_FLOAT_EQ(first.v, 4.0f / 16);
     EXPECT_FLOAT_EQ(batch.vertices()[2].x, 18.0f);
     EXPECT_FLOAT_EQ(batch.vertices()[2].y, 28.0f);
-    EXPECT_EQ(first.textured, 255);
+    EXPECT_EQ(first.sampling, kSampleTexelExact);
     batch.text("a b c", 0, 0, 8, Colour{});  // spaces add no quad: 4 quads so far
     batch.solid(0, 0, 1, 1, Colour{});       // the fifth
     EXPECT_EQ(flushed, (std::vector<size_t>{2, 2}));
     EXPECT_EQ(batch.quad_count(), 1u);
-    EXPECT_EQ(batch.vertices()[0].textured, 0);  // the solid quad
+    EXPECT_EQ(batch.vertices()[0].sampling, kSampleNone);  // the solid quad
     batch.flush();
     EXPECT_EQ(flushed, (std::vector<size_t>{2, 2, 1}));
     EXPECT_EQ(batch.quad_count(), 0u);
@@ -207,7 +207,7 @@ std::vector<PlacedGlyph> scene_glyphs(const Console& console) {
         int cell = console.layout().cell;
         for (size_t i = 0; i < vertices.size(); i += 4) {
             const QuadVertex& v = vertices[i];
-            if (!v.textured) continue;
+            if (v.sampling == kSampleNone) continue;
             int index = static_cast<int>(v.v * 16 + 0.5f) * 16 + static_cast<int>(v.u * 16 + 0.5f);
             glyphs.push_back({static_cast<char>(index), static_cast<int>(v.x) / cell,
                               static_cast<int>(v.y) / cell});

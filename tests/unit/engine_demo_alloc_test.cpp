@@ -1,7 +1,8 @@
 // The engine's per-frame demo path allocates nothing in steady state. Driven in-process the way
 // Engine::frame drives it, without a window: DemoSession::frame (reading the due blocks,
 // decoding them, applying them to the client, preparing the frame, passing on console text),
-// the view, and SceneBuilder::build (culling, entities, lighting). Counted by replacing the
+// the view, SceneBuilder::build (culling, entities, lighting), and the screen tint and status
+// bar quads the engine draws over the view (view_blend, build_hud). Counted by replacing the
 // global operator new in this test binary.
 //
 // Frames that may allocate, and are left out: the first frames of each level (warm-up: the
@@ -14,7 +15,10 @@
 
 #include "app/demo_session.h"
 #include "app/scene_builder.h"
+#include "client/view_blend.h"
 #include "engine_demo_replay.h"
+#include "hud/hud_scene.h"
+#include "hud_test_support.h"
 #include "render_allocation_counter.h"
 
 namespace nq {
@@ -41,6 +45,8 @@ struct AllocationReport {
     bool pause_held_demo = true;  // no demo frame was played while paused
     size_t max_visible_surfaces = 0;
     size_t max_entities = 0;
+    size_t max_hud_quads = 0;        // status bar, inventory and crosshair quads of one frame
+    float max_tint = 0;              // the strongest screen tint's alpha
     bool played_to_the_end = false;  // the demo ended by itself, without an error
     uint64_t demo_frames = 0;        // frames the demo played
 };
@@ -52,7 +58,10 @@ int contents_at(void* user, const Vec3& p) {
 
 class CountingDemoRun {
   public:
-    explicit CountingDemoRun(const Vfs& vfs) : session_(&vfs, callbacks()) {}
+    explicit CountingDemoRun(const Vfs& vfs) : session_(&vfs, callbacks()) {
+        hud_frame_.settings.crosshair = true;  // all of it: bars, inventory, crosshair
+        hud_batch_.set_flush([this](std::span<const QuadVertex> v) { hud_quads_ += v.size() / 4; });
+    }
 
     AllocationReport play(const std::string& file, DemoMode mode, double frame_time,
                           PauseWindow pause = {}) {
@@ -147,9 +156,22 @@ class CountingDemoRun {
             std::max<size_t>(report_.max_visible_surfaces, f.num_visible_surfaces);
         report_.max_entities =
             std::max<size_t>(report_.max_entities, f.num_alias_entities + f.num_brush_entities);
+
+        // What Engine::render_demo draws after the renderer (as quads; the GL part is fixed).
+        report_.max_tint =
+            std::max(report_.max_tint, view_blend(session_.client(), view.eye_contents).a);
+        hud_quads_ = 0;
+        hud_frame_.real_time = real_time_;
+        build_hud(session_.client(), hud_frame_, hud_.pictures, hud_batch_);
+        hud_batch_.flush();
+        report_.max_hud_quads = std::max(report_.max_hud_quads, hud_quads_);
     }
 
     SceneBuilder scene_;
+    test::HudTestData hud_;
+    HudFrame hud_frame_ = test::hud_frame(320, 240);
+    QuadBatch hud_batch_{256};
+    size_t hud_quads_ = 0;
     DemoSession session_;
     ViewState view_state_;
     double real_time_ = 0;
@@ -178,6 +200,7 @@ TEST(EngineDemoAllocations, WholeTimedemoOfDemoAllocatesNothingPerFrame) {
     EXPECT_GT(r.steady_frames, r.host_frames * 9 / 10);
     EXPECT_GT(r.max_visible_surfaces, 100u);
     EXPECT_GT(r.max_entities, 10u);
+    EXPECT_GT(r.max_hud_quads, 20u);  // the status bar was built every frame
 }
 
 TEST(EngineDemoAllocations, PlaybackOfDemo2WithAPauseAllocatesNothingPerFrame) {
@@ -193,6 +216,8 @@ TEST(EngineDemoAllocations, PlaybackOfDemo2WithAPauseAllocatesNothingPerFrame) {
     EXPECT_EQ(r.paused_frames, 30u);
     EXPECT_EQ(r.host_frames, r.demo_frames + 30);
     EXPECT_TRUE(r.pause_held_demo);
+    EXPECT_GT(r.max_hud_quads, 20u);
+    EXPECT_GT(r.max_tint, 0.0f) << "demo2 has damage or pickup flashes";
 }
 
 }  // namespace

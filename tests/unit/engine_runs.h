@@ -2,8 +2,10 @@
 // per test session and serves every test that reads its output or screenshots.
 //
 // All runs are headless (SDL offscreen, llvmpipe), small (320x240) and keep the screen free of
-// text: con_notifytime 0 and scr_centertime 0 stop printed lines and centre messages from being
-// drawn over the scene, so screenshots show only what the renderer drew.
+// what the engine draws over the scene: con_notifytime 0 and scr_centertime 0 stop printed
+// lines and centre messages, scr_drawhud 0 the status bar and scoreboards and gl_polyblend 0
+// the screen tints, so screenshots show only what the renderer drew (engine_hud_test.cpp turns
+// the bar back on).
 #pragma once
 
 #include <array>
@@ -34,7 +36,8 @@ inline std::vector<std::string> base_args(const std::string& dir, const std::str
     std::vector<std::string> args{"-userdir", dir + "/user", "-basedir", basedir};
     if (!game.empty()) args.insert(args.end(), {"-game", game});
     args.insert(args.end(), {"-width", std::to_string(kWidth), "-height", std::to_string(kHeight),
-                             "+con_notifytime", "0", "+scr_centertime", "0"});
+                             "+con_notifytime", "0", "+scr_centertime", "0", "+scr_drawhud", "0",
+                             "+gl_polyblend", "0"});
     return args;
 }
 

@@ -283,6 +283,8 @@ const SharedRun& demo_technical() {
                 "-game",           "lq1",         "-width",          "640",
                 "-height",         "480",         "+con_notifytime", "0",
                 "+scr_centertime", "0",           "+r_plugin",       "technical"};
+            // The renderer's picture alone: no status bar, no screen tints (engine_runs.h).
+            engine_runs::add(args, {"+scr_drawhud", "0", "+gl_polyblend", "0"});
             const std::string reference =
                 "tech_shading 3; tech_silhouettes 0; tech_creases 0; tech_world_edges 0; "
                 "tech_shadows 0; tech_fade 0; tech_edge_colors 0";

@@ -1,8 +1,9 @@
-#include "console/rgba_texture.h"
+#include "draw2d/rgba_texture.h"
 
 namespace nq {
 
-void upload_rgba_texture(GLuint texture, int width, int height, const uint8_t* rgba) {
+void upload_rgba_texture(GLuint texture, int width, int height, const uint8_t* rgba,
+                         TextureFilter filter) {
     GLint previous_texture = 0, alignment = 0, row_length = 0, unpack_buffer = 0;
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous_texture);
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
@@ -14,9 +15,9 @@ void upload_rgba_texture(GLuint texture, int width, int height, const uint8_t* r
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     glBindTexture(GL_TEXTURE_2D, texture);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    // Whole-multiple scales keep texels on pixels: nearest is exact, linear would blur.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    GLint gl_filter = filter == TextureFilter::Linear ? GL_LINEAR : GL_NEAREST;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 

@@ -1,4 +1,4 @@
-#include "console/overlay_gl_state.h"
+#include "draw2d/overlay_gl_state.h"
 
 namespace nq {
 namespace {

@@ -1,0 +1,67 @@
+#include "hud/hud.h"
+
+#include "client/view_blend.h"
+
+namespace nq {
+
+Hud::Hud(HostCore& host) : host_(host), cvars_(register_hud_cvars(host.cvars())) {
+    CommandSystem& commands = host_.commands();
+    added_show_command_ = commands.add_command(
+        "+showscores", [this](const CommandArgs&) { show_scores_ = true; },
+        "+showscores: show the scoreboard while the key is held");
+    added_hide_command_ = commands.add_command(
+        "-showscores", [this](const CommandArgs&) { show_scores_ = false; },
+        "-showscores: back to the status bar");
+}
+
+Hud::~Hud() {
+    if (added_show_command_) host_.commands().remove_command("+showscores");
+    if (added_hide_command_) host_.commands().remove_command("-showscores");
+}
+
+std::vector<std::string> Hud::load_pictures(const Wad* gfx_wad, const Palette* palette,
+                                            const Vfs* vfs) {
+    std::vector<std::string> messages;
+    Result<HudDrawer> drawer = HudDrawer::create();
+    if (!drawer) {
+        messages.push_back("status bar: " + drawer.error().message);
+        return messages;
+    }
+    drawer_.emplace(std::move(*drawer));
+    if (!gfx_wad || !palette) return messages;  // tints only
+
+    HudPictures pictures = HudPictures::load(*gfx_wad, *palette, vfs);
+    for (const std::string& warning : pictures.warnings()) {
+        messages.push_back("status bar: " + warning);
+    }
+    if (!pictures.missing().empty()) {
+        std::string line = "status bar: not in the game data, not drawn:";
+        for (const std::string& name : pictures.missing()) line += " " + name;
+        messages.push_back(line);
+    }
+    drawer_->set_pictures(std::move(pictures));
+    return messages;
+}
+
+HudSettings Hud::settings() const {
+    HudSettings settings;
+    settings.viewsize = cvars_.viewsize->value();
+    settings.bar_alpha = cvars_.bar_alpha->value();
+    settings.crosshair = cvars_.crosshair->value() != 0;
+    settings.show_scores = show_scores_;
+    return settings;
+}
+
+void Hud::draw(const ClientState& client, int eye_contents, int width, int height,
+               double real_time) {
+    if (!drawer_) return;
+    ScreenBlend blend;
+    if (cvars_.polyblend->value() != 0) blend = view_blend(client, eye_contents);
+    HudFrame frame;
+    frame.screen = HudScreen{width, height, cvars_.bar_scale->value()};
+    frame.settings = settings();
+    frame.real_time = real_time;
+    drawer_->draw(client, blend, frame, cvars_.draw_hud->value() != 0);
+}
+
+}  // namespace nq

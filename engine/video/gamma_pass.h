@@ -1,0 +1,35 @@
+// The `gamma` cvar, as QuakeSpasm applies it: every colour channel of the finished frame
+// becomes channel^gamma (below 1 brighter, above 1 darker). The frame is copied into a texture
+// and drawn back through a small shader -- a full-screen pass, so it runs only when gamma is
+// not 1; at gamma 1 apply() returns at once and costs nothing.
+//
+//   auto pass = GammaPass::create();                 // a GL context must be current
+//   after the last thing drawn, before the swap: pass->apply(gamma, width, height);
+//
+// apply() works on (0, 0, width, height) of the bound framebuffer and puts back the GL state
+// it changes (program, vertex array, texture binding, blending, depth, cull, scissor,
+// stencil, viewport, colour mask, polygon mode).
+#pragma once
+
+#include "common/result.h"
+#include "video/gl_objects.h"
+
+namespace nq {
+
+class GammaPass {
+  public:
+    static Result<GammaPass> create();
+
+    void apply(float gamma, int width, int height);
+
+  private:
+    explicit GammaPass(GlProgram program);
+
+    GlProgram program_;
+    GlVertexArray empty_vertex_array_;  // the triangle comes from gl_VertexID
+    GlTexture frame_copy_;
+    int copy_width_ = 0, copy_height_ = 0;
+    GLint gamma_location_ = -1;
+};
+
+}  // namespace nq
