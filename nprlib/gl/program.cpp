@@ -68,9 +68,11 @@ ProgramBuild Program::build(const ProgramSource& source, ObjectTracker* tracker)
     const char* name = source.name ? source.name : "program";
     Shader vertex = compile_stage(GL_VERTEX_SHADER, source.vertex, name, tracker, result.error);
     if (!vertex) return result;
-    Shader fragment =
-        compile_stage(GL_FRAGMENT_SHADER, source.fragment, name, tracker, result.error);
-    if (!fragment) return result;
+    Shader fragment;
+    if (source.fragment) {
+        fragment = compile_stage(GL_FRAGMENT_SHADER, source.fragment, name, tracker, result.error);
+        if (!fragment) return result;
+    }
     Shader geometry;
     if (source.geometry) {
         geometry = compile_stage(GL_GEOMETRY_SHADER, source.geometry, name, tracker, result.error);
@@ -79,14 +81,18 @@ ProgramBuild Program::build(const ProgramSource& source, ObjectTracker* tracker)
 
     ProgramName program = ProgramName::create(tracker);
     glAttachShader(program.id(), vertex.id());
-    glAttachShader(program.id(), fragment.id());
+    if (fragment) glAttachShader(program.id(), fragment.id());
     if (geometry) glAttachShader(program.id(), geometry.id());
+    if (source.feedback_count > 0) {
+        glTransformFeedbackVaryings(program.id(), source.feedback_count, source.feedback_varyings,
+                                    GL_INTERLEAVED_ATTRIBS);
+    }
     glLinkProgram(program.id());
     GLint linked = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
     // The shaders are flagged for deletion with the program once detached.
     glDetachShader(program.id(), vertex.id());
-    glDetachShader(program.id(), fragment.id());
+    if (fragment) glDetachShader(program.id(), fragment.id());
     if (geometry) glDetachShader(program.id(), geometry.id());
     if (linked != GL_TRUE) {
         result.error =
@@ -99,10 +105,14 @@ ProgramBuild Program::build(const ProgramSource& source, ObjectTracker* tracker)
 
 GLint Program::location(const char* uniform_name) {
     for (const CachedLocation& cached : cache_) {
+        // The same pointer nearly always means the same literal; one compare makes it certain.
+        if (cached.key == uniform_name && cached.name == uniform_name) return cached.location;
+    }
+    for (const CachedLocation& cached : cache_) {
         if (std::strcmp(cached.name.c_str(), uniform_name) == 0) return cached.location;
     }
     GLint location = glGetUniformLocation(name_.id(), uniform_name);
-    cache_.push_back({uniform_name, location});
+    cache_.push_back({uniform_name, uniform_name, location});
     return location;
 }
 

@@ -16,8 +16,11 @@ namespace nq::npr::gl {
 struct ProgramSource {
     const char* name;  // for error messages, e.g. "classic world"
     const char* vertex;
-    const char* fragment;
+    const char* fragment;            // may be null for a transform-feedback-only program
     const char* geometry = nullptr;  // optional geometry stage (edge quads, fins)
+    // Vertex outputs captured by transform feedback, interleaved in this order.
+    const char* const* feedback_varyings = nullptr;
+    int feedback_count = 0;
 };
 
 struct ProgramBuild;
@@ -34,7 +37,8 @@ class Program {
     explicit operator bool() const { return static_cast<bool>(name_); }
     void use() const { glUseProgram(name_.id()); }
 
-    // Location of a uniform (-1 when the linker dropped or never had it), cached by name.
+    // Location of a uniform (-1 when the linker dropped or never had it), cached by name (found
+    // by pointer first, as callers pass string literals, then by comparing the text).
     GLint location(const char* uniform_name);
 
     void reset() {
@@ -44,6 +48,7 @@ class Program {
 
   private:
     struct CachedLocation {
+        const char* key;  // the pointer first asked with: a call site asks with the same one
         std::string name;
         GLint location;
     };

@@ -1,13 +1,16 @@
 // Silhouette and crease edges of alias models (MDL) in the technical style. The edges are found
-// on the CPU (AliasEdgeMesh::find_edges, on the pose blended once per frame) and each becomes a
-// quad of constant pixel width (edge_glsl.h) drawn by a vertex shader alone: four vertices per
-// edge, two at each end, coloured from the surface shaded under that end (technical_shade on
-// the pose normal, for white addition and distance fade). No geometry shader: on llvmpipe one
-// costs more than the whole CPU search, and a GPU draws the quads just as well.
-//
-// A frame's edges are gathered first (begin_frame, add_entity per entity, upload: one stream
-// upload for every entity) and then drawn pass by pass (begin, draw_entity per entity, end),
-// so the program and the per-frame uniforms are set once per pass, not per entity.
+// on the CPU (AliasEdgeMesh::find_edges, on the pose blended once per frame) and drawn without a
+// geometry shader, in two GPU steps:
+//   - shading: one transform-feedback pass over every MDL vertex of every entity with edges
+//     (points, rasteriser off) writes its view-space position, distance from the eye and the
+//     surface colour shaded there (technical_shade on the pose normal) into a buffer: each
+//     vertex is shaded once, however many edges meet at it;
+//   - quads: each edge becomes a quad of constant pixel width (edge_glsl.h), four vertices that
+//     only know the indices of the edge's two ends in that buffer; the vertex shader reads the
+//     ends, colours the edge (white addition, distance fade) and offsets the corner on screen.
+// A frame's edges are gathered first (begin_frame, add_entity per entity, upload: the corners
+// in one stream upload, then the shading pass) and drawn pass by pass (begin, draw_entity per
+// entity, end): no per-entity state but the draw itself.
 #pragma once
 
 #include <cstddef>
@@ -15,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "classic/alias_model_gpu.h"
@@ -37,24 +41,28 @@ struct EdgeSpan {
 
 class AliasEdgeDrawer {
   public:
+    // Vertices the shading pass can hold in one frame (all entities with edges together).
+    static constexpr uint32_t kMaxShadedVertices = 1u << 17;
+
     bool init(gl::ObjectTracker* tracker, std::string& error);
     void reset();
 
     // Gathering. begin_frame empties the batch; add_entity finds the entity's edges on `pose`
-    // (mesh.vertex_count() model-space positions) seen from entity.eye_model and appends their
-    // quads; upload sends the batch to the GPU (after the last add_entity, before drawing).
+    // (mesh.vertex_count() model-space positions) seen from entity.eye_model, appends their
+    // quads and schedules its vertices for shading (skin_texture: mipmapped, k_d is read from
+    // it; the pose normals come from `faces`); upload sends the quads and runs the shading
+    // pass (after the last add_entity, before drawing).
     void begin_frame();
-    EdgeSpan add_entity(const nqr_entity& entity, const AliasEdgeMesh& mesh,
-                        const glm::vec3* pose, const EdgeSettings& settings);
-    void upload();
+    EdgeSpan add_entity(const nqr_entity& entity, const classic::AliasModelGpu& faces,
+                        GLuint skin_texture, const AliasEdgeMesh& mesh, const glm::vec3* pose,
+                        const EdgeSettings& settings);
+    void upload(const classic::FrameView& view, const ShadingSettings& shading);
 
     // Drawing, after the entities' faces (the depth buffer holds them). begin starts from
     // frame_view.h's state, end restores it; the depth range is the caller's (the view model's
-    // squeeze). skin_texture: mipmapped, k_d is read from it; the pose normals come from `faces`.
-    void begin(const classic::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
-               const TechnicalSettings& settings);
-    void draw_entity(const classic::FrameView& view, const nqr_entity& entity,
-                     const classic::AliasModelGpu& faces, GLuint skin_texture, EdgeSpan span);
+    // squeeze).
+    void begin(const EdgeFrameUniforms& frame_uniforms, const EdgeSettings& settings);
+    void draw(EdgeSpan span);
     void end();
 
     // All of the above for one entity (its pose blended here).
@@ -66,22 +74,33 @@ class AliasEdgeDrawer {
     size_t edges_in_batch() const { return corners_.size() / 4; }
 
   private:
-    // One vertex of an edge's quad (model space), 32 bytes.
+    // One vertex of an edge's quad: the ends' rows in the shaded-vertex buffer. 12 bytes.
     struct Corner {
-        glm::vec3 own, other;
-        uint16_t uv[2];   // own end's skin coordinate, normalised
-        uint32_t packed;  // side (bit 0) | EdgeKind (bits 1-2) | own end's MDL vertex << 3
+        uint32_t own, other;
+        uint32_t side_and_kind;  // side (bit 0) | EdgeKind << 1
     };
+    // An entity whose vertices the shading pass shades, from row `first_row` on.
+    struct ShadedEntity {
+        const nqr_entity* entity;
+        const classic::AliasModelGpu* faces;
+        GLuint skin;
+        uint32_t first_row;
+    };
+    void shade_vertices(const classic::FrameView& view, const ShadingSettings& shading);
 
-    gl::Program program_;
-    gl::StreamBuffer stream_;
-    gl::Buffer quad_indices_;  // 0 1 2 0 2 3 per quad, for every quad a push can hold
-    gl::VertexArray vertex_array_;
+    gl::Program quads_, shading_;
+    gl::StreamBuffer corner_stream_;
+    gl::Buffer quad_indices_;     // 0 1 2 0 2 3 per quad, for every quad a push can hold
+    gl::Buffer shaded_;           // transform feedback output, 2 RGBA32F texels per vertex
+    gl::Texture shaded_texture_;  // the same buffer, as a buffer texture for the quads
+    gl::VertexArray quads_array_, points_array_;
     size_t max_edges_ = 0;
     std::vector<Corner> corners_;
-    std::vector<FoundEdge> found_;       // scratch: one entity's edges
-    std::vector<glm::vec3> pose_;        // scratch: the convenience draw_entity's pose
-    size_t base_vertex_ = 0;             // where upload put corners_[0], in corners
+    std::vector<ShadedEntity> shaded_entities_;
+    std::vector<glm::vec2> skin_coords_;  // per shaded row: its MDL vertex's skin coordinate
+    uint32_t shaded_rows_ = 0;
+    std::vector<FoundEdge> found_;  // scratch: one entity's edges
+    std::vector<glm::vec3> pose_;   // scratch: the convenience draw_entity's pose
     bool uploaded_ = false;
 };
 

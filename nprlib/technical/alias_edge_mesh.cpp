@@ -8,6 +8,7 @@
 
 #include "adjacency/model_adjacency.h"
 #include "classic/alias_mesh.h"
+#include "technical/shadow_mesh.h"
 
 namespace nq::npr::technical {
 namespace {
@@ -117,14 +118,16 @@ std::unique_ptr<AliasEdgeMesh> AliasEdgeMesh::create(const nqr_alias_model& mode
     mesh->vertex_count_ = model.num_vertices;
     mesh->edges_ = edge_records(recovered.edges);
     mesh->triangles_ = file_triangles(model);
+    mesh->shadow_triangles_ = technical::shadow_triangles(recovered.mesh);
+    if (mesh->shadow_triangles_.empty()) mesh->shadow_triangles_ = mesh->triangles_;
     mesh->twins_ = side_twins(mesh->triangles_);
     mesh->facing_away_.reserve(mesh->triangles_.size());
     mesh->skin_coords_ = front_skin_coords(model);
     return mesh;
 }
 
-void AliasEdgeMesh::find_edges(const glm::vec3* pose, const glm::vec3& eye,
-                               const EdgeQuery& query, std::vector<FoundEdge>& out) const {
+void AliasEdgeMesh::find_edges(const glm::vec3* pose, const glm::vec3& eye, const EdgeQuery& query,
+                               std::vector<FoundEdge>& out) const {
     if (!pose) return;
     if (query.backface_lines) find_backface_lines(pose, eye, out);
     if (query.silhouettes || query.creases) find_true_edges(pose, eye, query, out);

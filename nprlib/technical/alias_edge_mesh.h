@@ -66,6 +66,8 @@ class AliasEdgeMesh {
     size_t edge_count() const { return edges_.size(); }
     // The file's usable triangles, counter-clockwise seen from outside.
     std::span<const Triangle> triangles() const { return triangles_; }
+    // The triangles its shadow is cast with (shadow_mesh.h), likewise.
+    std::span<const Triangle> shadow_triangles() const { return shadow_triangles_; }
     // Per MDL vertex: its skin coordinate ((s + 0.5) / w, (t + 0.5) / h, front side of a seam).
     std::span<const glm::vec2> skin_coords() const { return skin_coords_; }
 
@@ -84,6 +86,7 @@ class AliasEdgeMesh {
     uint32_t vertex_count_ = 0;
     std::vector<std::array<uint32_t, 4>> edges_;  // (third, v0, v1, far) per mesh edge
     std::vector<Triangle> triangles_;
+    std::vector<Triangle> shadow_triangles_;
     // Per triangle side k (from corner k to k + 1): the one triangle running that side the
     // other way round, or -1 when there is none or the side has more than two triangles.
     std::vector<std::array<int32_t, 3>> twins_;

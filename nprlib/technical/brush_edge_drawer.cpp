@@ -36,7 +36,7 @@ void main() {
 // edge_glsl's library goes between the header and the body.
 constexpr char kGeometryHeader[] = R"(#version 330 core
 layout(lines) in;
-layout(triangle_strip, max_vertices = 18) out;  // 2 (EDGE_MAX_PIECES + 1)
+layout(triangle_strip, max_vertices = 4) out;
 )";
 
 constexpr char kGeometryBody[] = R"(

@@ -71,38 +71,26 @@ bool clip_edge(inout vec3 view0, inout vec3 view1, float pull, out float t0, out
     return true;
 }
 
-// The quad's screen-space offsets for the segment from clip-space c0 to c1, in NDC per unit of
-// w: `side` across it and `cap` along it, each half_width pixels long; `pixels`: its length.
-void edge_offsets(vec4 c0, vec4 c1, float half_width, out vec2 side, out vec2 cap,
-                  out float pixels) {
-    vec2 s0 = c0.xy / c0.w * 0.5 * u_viewport, s1 = c1.xy / c1.w * 0.5 * u_viewport;
-    vec2 along = s1 - s0;
-    pixels = length(along);
-    along = pixels > 1e-4 ? along / pixels : vec2(1.0, 0.0);
-    vec2 to_ndc = 2.0 / u_viewport;
-    side = vec2(-along.y, along.x) * half_width * to_ndc;
-    cap = along * half_width * to_ndc;
-}
-
 vec4 offset_clip(vec4 c, vec2 offset) { return vec4(c.xy + offset * c.w, c.zw); }
 
 // Corner `corner` of the quad from c0 to c1: 0 and 1 at c0, 2 and 3 at c1; even corners on one
 // side, odd on the other; square caps half a width long.
 vec4 edge_corner(vec4 c0, vec4 c1, float half_width, int corner) {
-    vec2 side, cap;
-    float pixels;
-    edge_offsets(c0, c1, half_width, side, cap, pixels);
+    vec2 s0 = c0.xy / c0.w * 0.5 * u_viewport, s1 = c1.xy / c1.w * 0.5 * u_viewport;
+    vec2 along = s1 - s0;
+    float len = length(along);
+    along = len > 1e-4 ? along / len : vec2(1.0, 0.0);
+    // Pixel offsets back to clip space: multiply by w and divide by the half viewport.
+    vec2 to_ndc = 2.0 / u_viewport;
+    vec2 side = vec2(-along.y, along.x) * half_width * to_ndc;
+    vec2 cap = along * half_width * to_ndc;
     vec2 sideways = (corner & 1) == 0 ? -side : side;
     return corner < 2 ? offset_clip(c0, sideways - cap) : offset_clip(c1, sideways + cap);
 }
 )";
 
-// Geometry stage: emit_edge() writes one strip along the edge, cut into pieces at most
-// EDGE_PIECE_PIXELS long: a tile-based rasteriser (llvmpipe) bins a triangle into every tile
-// of its bounding box, so one long thin diagonal quad costs far more than a row of short ones.
+// Geometry stage: emit_edge() writes one quad.
 const char* const kEdgeGeometryLibrary = R"(
-#define EDGE_PIECE_PIXELS 64.0
-#define EDGE_MAX_PIECES 8
 out vec3 g_color;
 void emit_edge(vec3 view0, vec3 view1, vec3 color0, vec3 color1, int kind) {
     float half_width = edge_half_width(kind);
@@ -111,18 +99,9 @@ void emit_edge(vec3 view0, vec3 view1, vec3 color0, vec3 color1, int kind) {
     if (!clip_edge(view0, view1, pull, t0, t1)) return;
     vec3 from = mix(color0, color1, t0), to = mix(color0, color1, t1);
     vec4 c0 = pulled_clip(view0, pull), c1 = pulled_clip(view1, pull);
-    vec2 side, cap;
-    float pixels;
-    edge_offsets(c0, c1, half_width, side, cap, pixels);
-    int pieces = clamp(int(ceil(pixels / EDGE_PIECE_PIXELS)), 1, EDGE_MAX_PIECES);
-    for (int i = 0; i <= pieces; ++i) {
-        float t = float(i) / float(pieces);
-        vec4 c = i == 0 ? c0 : (i == pieces ? c1 : pulled_clip(mix(view0, view1, t), pull));
-        vec2 along = i == 0 ? -cap : (i == pieces ? cap : vec2(0.0));
-        g_color = mix(from, to, t);
-        gl_Position = offset_clip(c, along - side);
-        EmitVertex();
-        gl_Position = offset_clip(c, along + side);
+    for (int corner = 0; corner < 4; ++corner) {
+        g_color = corner < 2 ? from : to;
+        gl_Position = edge_corner(c0, c1, half_width, corner);
         EmitVertex();
     }
     EndPrimitive();

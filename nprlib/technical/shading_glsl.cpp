@@ -16,8 +16,12 @@ uniform float u_ambient, u_directional;
 uniform vec3 u_light_color;
 uniform vec3 u_object_color;
 
+// The skin's mean colour: its last (1x1) mip level, fetched without filtering.
 vec3 skin_average(sampler2D skin) {
-    return textureLod(skin, vec2(0.5), 20.0).rgb;  // the 1x1 mip: the skin's mean colour
+    ivec2 size = textureSize(skin, 0);
+    int last = 0;
+    for (int n = max(size.x, size.y); n > 1; n >>= 1) ++last;
+    return texelFetch(skin, ivec2(0), last).rgb;
 }
 
 // k_d from the skin's average, blended toward the texel at uv (lod < 0: implicit lod).

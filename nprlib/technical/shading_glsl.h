@@ -7,8 +7,9 @@
 //     (Gooch and metal; classic stays unmodified);
 //   - Gooch 99 metal: k_d streaked by bands across the model's height, brightened toward l;
 //   - classic: GLQuake-like lit texture (ambient + directional), for comparison.
-// k_d is the skin's average colour (its smallest mip) blended toward the texel itself by
-// texture_blend. Paste kShadingLibrary after the #version line; set_shading_uniforms() fills it.
+// k_d is the skin's average colour (its 1x1 mip level; the skin must be mipmapped) blended
+// toward the texel itself by texture_blend. Paste kShadingLibrary after the #version line;
+// set_shading_uniforms() fills it.
 #pragma once
 
 #include <cstdint>

@@ -116,7 +116,7 @@ void ShadowDrawer::add_entity(const classic::FrameView& view, const nqr_entity& 
     // Facing in model space: n_world . l = n_model . (M^-1 l) for the model's linear part.
     const glm::vec3 light = glm::inverse(glm::mat3(model)) * passes.light;
     lit_.clear();
-    const std::span<const AliasEdgeMesh::Triangle> triangles = mesh.triangles();
+    const std::span<const AliasEdgeMesh::Triangle> triangles = mesh.shadow_triangles();
     for (uint32_t t = 0; t < triangles.size(); ++t) {
         const auto& [a, b, c] = triangles[t];
         const glm::vec3 normal = glm::cross(pose[b] - pose[a], pose[c] - pose[a]);
@@ -146,11 +146,12 @@ void ShadowDrawer::draw(const ShadowSettings& settings) {
     const size_t offset = vertex_stream_.push(vertices_.data(), bytes, 4);
     if (offset == gl::StreamBuffer::kNoSpace) return;
     program_.use();
-    glUniform3f(program_.location("u_color"), settings.color.r, settings.color.g,
-                settings.color.b);
+    glUniform3f(program_.location("u_color"), settings.color.r, settings.color.g, settings.color.b);
     glBindVertexArray(vertex_array_.id());
     glBindBuffer(GL_ARRAY_BUFFER, vertex_stream_.id());
-    const auto at = [offset](size_t field) { return reinterpret_cast<const void*>(offset + field); };
+    const auto at = [offset](size_t field) {
+        return reinterpret_cast<const void*>(offset + field);
+    };
     glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(Vertex), at(offsetof(Vertex, clip)));
     glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, sizeof(Vertex), at(offsetof(Vertex, alpha)));
     glBindBuffer(GL_ARRAY_BUFFER, 0);

@@ -1,8 +1,10 @@
 #include "technical/technical_models.h"
 
 #include <algorithm>
+#include <span>
 
 #include "classic/abi_access.h"
+#include "gl/palette_image.h"
 
 namespace nq::npr::technical {
 
@@ -24,8 +26,21 @@ void TechnicalModels::add(const nqr_model& model) {
     models_.emplace(model.id, std::move(entry));
 }
 
+float fullbright_share(const nqr_alias_model& model) {
+    if (model.num_skins == 0 || !has_known_prefix(model.skins)) return 0.0f;
+    const nqr_alias_skin& skin = classic::abi_element(model.skins, 0);
+    if (skin.num_images == 0 || !skin.images || !skin.images[0]) return 0.0f;
+    const size_t pixels =
+        size_t(std::max(model.skin_width, 0)) * size_t(std::max(model.skin_height, 0));
+    if (pixels == 0) return 0.0f;
+    const std::span<const uint8_t> image(skin.images[0], pixels);
+    const auto bright = std::count_if(image.begin(), image.end(), gl::is_fullbright_index);
+    return static_cast<float>(bright) / static_cast<float>(pixels);
+}
+
 void TechnicalModels::add_alias(const nqr_model& model, TechnicalModel& out) {
     const std::string name = model.name ? model.name : "?";
+    out.casts_shadow = fullbright_share(*model.alias) < kLightSkinShare;
     std::string error;
     out.alias_edges = AliasEdgeMesh::create(*model.alias, error);
     if (!out.alias_edges) {

@@ -22,7 +22,15 @@ struct TechnicalModel {
     const BrushEdgeMesh* brush_edges = nullptr;  // brush models (shared)
     uint32_t first_surface = 0, num_surfaces = 0;
     float radius = 0;  // bounding radius about the model origin (nqr_model.radius)
+    // False for a model that is itself a light (flames, torches, lava balls, bolts): its first
+    // skin is at least kLightSkinShare fullbright. A light casts no shadow.
+    bool casts_shadow = true;
 };
+
+inline constexpr float kLightSkinShare = 0.4f;
+
+// Share of an alias model's first skin image that is fullbright colours (0 without skins).
+float fullbright_share(const nqr_alias_model& model);
 
 class TechnicalModels {
   public:

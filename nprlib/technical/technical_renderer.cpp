@@ -20,6 +20,10 @@ using classic::has_known_prefix;
 
 namespace {
 
+bool wants_alias_edges(const EdgeSettings& settings) {
+    return settings.silhouettes || settings.creases;
+}
+
 bool is_view_model(const nqr_entity& entity) {
     return (entity.flags & NQR_ENTITY_VIEWMODEL) != 0;
 }
@@ -157,6 +161,7 @@ bool TechnicalRenderer::find_alias(const nqr_entity* entity, AliasItem& out) con
     const TechnicalModel* model = models_.find(entity->model);
     out.edges = model ? model->alias_edges.get() : nullptr;
     out.radius = model ? model->radius * std::max(entity->scale, 1.0f) : 0.0f;
+    out.casts_shadow = !model || model->casts_shadow;
     return true;
 }
 
@@ -203,8 +208,14 @@ void TechnicalRenderer::gather_alias_entities(const nqr_frame& frame,
         if (!find_alias(frame.alias_entities[i], item)) continue;
         const bool on_screen = entity_in_view(item.entity);
         const ShadowPasses shadow = shadow_passes(item, view);
-        const bool edges = on_screen && item.edges && !edges_fully_faded(item, view);
+        const bool edges = on_screen && item.edges && wants_alias_edges(settings.edges) &&
+                           !edges_fully_faded(item, view);
         if (!on_screen && shadow.count == 0) continue;
+        if (on_screen) {
+            item.skin =
+                classic_.alias_drawer().skin_texture(frame, *item.entity, *item.gpu, *item.image);
+            item.fullbright = item.image->fullbright ? item.image->fullbright.id() : 0;
+        }
         if ((shadow.count > 0 || edges) && item.edges) {
             pose_.resize(std::max<size_t>(pose_.size(), item.edges->vertex_count()));
             blend_alias_pose(item.gpu->model(), *item.entity, pose_.data());
@@ -212,16 +223,13 @@ void TechnicalRenderer::gather_alias_entities(const nqr_frame& frame,
                 shadows_.add_entity(view, *item.entity, *item.edges, pose_.data(), shadow);
             }
             if (edges) {
-                item.edge_span =
-                    alias_edges_.add_entity(*item.entity, *item.edges, pose_.data(), settings.edges);
+                item.edge_span = alias_edges_.add_entity(*item.entity, *item.gpu, item.skin,
+                                                         *item.edges, pose_.data(), settings.edges);
             }
         }
-        if (!on_screen) continue;
-        item.skin = classic_.alias_drawer().skin_texture(frame, *item.entity, *item.gpu, *item.image);
-        item.fullbright = item.image->fullbright ? item.image->fullbright.id() : 0;
-        items_.push_back(item);
+        if (on_screen) items_.push_back(item);
     }
-    alias_edges_.upload();
+    alias_edges_.upload(view, settings.shading);
 }
 
 // Shadows fade out over the last quarter of tech_shadow_distance instead of popping away.
@@ -236,7 +244,7 @@ float TechnicalRenderer::shadow_distance_fade(float distance) const {
 ShadowPasses TechnicalRenderer::shadow_passes(const AliasItem& item,
                                               const classic::FrameView& view) const {
     ShadowPasses none;
-    if (!settings.shadows.enabled || !item.edges ||
+    if (!settings.shadows.enabled || !item.edges || !item.casts_shadow ||
         !in_pass(*item.entity, static_cast<int>(AliasPass::opaque))) {
         return none;
     }
@@ -245,9 +253,8 @@ ShadowPasses TechnicalRenderer::shadow_passes(const AliasItem& item,
     if (fade <= 0.0f) return none;
     const ShadowPlane plane = find_shadow_plane(*engine_, origin, settings.shadows.max_drop);
     if (!plane.found) return none;
-    ShadowPasses passes =
-        build_shadow_passes(plane, glm::make_vec3(item.entity->light.direction), origin,
-                            settings.shadows, item.radius);
+    ShadowPasses passes = build_shadow_passes(plane, glm::make_vec3(item.entity->light.direction),
+                                              origin, settings.shadows, item.radius);
     if (!entity_in_view(item.entity) &&
         classic::sphere_outside_view(view, passes.bounds_centre, passes.bounds_radius)) {
         return none;
@@ -282,9 +289,9 @@ void TechnicalRenderer::draw_alias_edges(const classic::FrameView& view,
         if (item.edge_span.edge_count == 0 || !in_pass(*item.entity, static_cast<int>(pass))) {
             continue;
         }
-        if (!begun) alias_edges_.begin(view, uniforms, settings);
+        if (!begun) alias_edges_.begin(uniforms, settings.edges);
         begun = true;
-        alias_edges_.draw_entity(view, *item.entity, *item.gpu, item.skin, item.edge_span);
+        alias_edges_.draw(item.edge_span);
     }
     if (begun) alias_edges_.end();
 }

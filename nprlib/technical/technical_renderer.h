@@ -18,8 +18,8 @@
 #include "nqr_renderer.h"
 #include "technical/alias_edge_drawer.h"
 #include "technical/alias_face_drawer.h"
-#include "technical/planar_shadow.h"
 #include "technical/brush_edge_drawer.h"
+#include "technical/planar_shadow.h"
 #include "technical/shadow_drawer.h"
 #include "technical/technical_models.h"
 #include "technical/technical_settings.h"
@@ -60,6 +60,7 @@ class TechnicalRenderer {
         const classic::SkinImageGpu* image = nullptr;
         const AliasEdgeMesh* edges = nullptr;
         float radius = 0;
+        bool casts_shadow = true;
         GLuint skin = 0, fullbright = 0;
         EdgeSpan edge_span;
     };

@@ -18,6 +18,7 @@
 #include "technical/alias_pose.h"
 #include "technical/planar_shadow.h"
 #include "technical/shadow_drawer.h"
+#include "technical/technical_models.h"
 #include "technical/technical_settings.h"
 
 namespace nq::npr::test {
@@ -206,6 +207,21 @@ nqr_engine engine_with_floor(glm::vec3 normal, float dist, glm::vec3 hit) {
     engine.size = sizeof(nqr_engine);
     engine.trace = fake_trace;
     return engine;
+}
+
+// A model that is mostly fullbright colours (224..254) glows: it is a light, not a caster.
+TEST(LightModels, FullbrightShareOfTheFirstSkinCountsFullbrightPixels) {
+    AliasBuilder b;
+    b.add_box_pose({0, 0, 0}, {16, 16, 16});
+    b.skin.assign(64, 15);
+    EXPECT_EQ(technical::fullbright_share(*b.build()), 0.0f);
+    std::fill(b.skin.begin(), b.skin.begin() + 16, 224);       // the first fullbright colour
+    std::fill(b.skin.begin() + 16, b.skin.begin() + 24, 254);  // and the last
+    std::fill(b.skin.begin() + 24, b.skin.begin() + 32, 255);  // transparent, not bright
+    EXPECT_FLOAT_EQ(technical::fullbright_share(*b.build()), 24.0f / 64.0f);
+    EXPECT_LT(technical::fullbright_share(*b.build()), technical::kLightSkinShare);
+    b.skin.assign(64, 240);
+    EXPECT_EQ(technical::fullbright_share(*b.build()), 1.0f);
 }
 
 TEST(FindShadowPlane, TracesStraightDownAndReturnsThePlaneHit) {
@@ -679,7 +695,7 @@ TEST_F(TechnicalShadowsTest, ShadowsOfTwoCastersMergeWhereTheyOverlap) {
     const auto two_colours = shadow_colours(two, unshadowed);
     ASSERT_EQ(one_colours.size(), 1u);
     ASSERT_EQ(two_colours.size(), 1u);
-    EXPECT_EQ(two_colours.begin()->first, one_colours.begin()->first);  // as dark as one
+    EXPECT_EQ(two_colours.begin()->first, one_colours.begin()->first);         // as dark as one
     EXPECT_GT(two_colours.begin()->second, one_colours.begin()->second + 20);  // more floor
 }
 
