@@ -5,7 +5,8 @@
 #
 # usage: demos/technical_gallery.sh [--out DIR]      (default docs/images/technical)
 # env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
-# Needs ImageMagick (montage, convert) for the labelled contact sheets.
+# Needs ImageMagick (montage, convert) for the labelled contact sheets. The status bar and the
+# screen tints are off, so the pictures show the models.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 data=${NPRQ_DATA:-$root/../shared/data}
@@ -85,7 +86,8 @@ compare() {  # frame -> commands taking both styles' screenshots
 script demo > "$work/user/lq1/gallery.cfg"
 echo "quit" >> "$work/user/lq1/gallery.cfg"
 SDL_VIDEODRIVER=offscreen "$engine" -userdir "$work/user" -basedir "$data" -game lq1 -width 640 \
-    -height 480 +con_notifytime 0 +scr_centertime 0 +exec frames.cfg +timedemo demo \
+    -height 480 +con_notifytime 0 +scr_centertime 0 +scr_drawhud 0 +gl_polyblend 0 \
+    +exec frames.cfg +timedemo demo \
     > "$work/demo.log" 2>&1 || true
 
 sheet() {  # output title files...

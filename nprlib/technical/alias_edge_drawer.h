@@ -9,8 +9,8 @@
 //     only know the indices of the edge's two ends in that buffer; the vertex shader reads the
 //     ends, colours the edge (white addition, distance fade) and offsets the corner on screen.
 // A frame's edges are gathered first (begin_frame, add_entity per entity, upload: the corners
-// in one stream upload, then the shading pass) and drawn pass by pass (begin, draw_entity per
-// entity, end): no per-entity state but the draw itself.
+// in one stream upload, then the shading pass) and drawn pass by pass (begin, draw per span of
+// edges, end): no per-entity state, so the spans of neighbouring entities go in one draw.
 #pragma once
 
 #include <cstddef>

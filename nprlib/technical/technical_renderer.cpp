@@ -282,18 +282,26 @@ bool TechnicalRenderer::edges_fully_faded(const AliasItem& item,
     return distance - item.radius > settings.edges.fade_distance;
 }
 
+// Entities of one pass whose edges lie next to each other in the batch go in one draw.
 void TechnicalRenderer::draw_alias_edges(const classic::FrameView& view,
                                          const EdgeFrameUniforms& uniforms, AliasPass pass) {
+    EdgeSpan run{0, 0};
     bool begun = false;
     for (const AliasItem& item : items_) {
-        if (item.edge_span.edge_count == 0 || !in_pass(*item.entity, static_cast<int>(pass))) {
-            continue;
-        }
+        const EdgeSpan span = item.edge_span;
+        if (span.edge_count == 0 || !in_pass(*item.entity, static_cast<int>(pass))) continue;
         if (!begun) alias_edges_.begin(uniforms, settings.edges);
         begun = true;
-        alias_edges_.draw(item.edge_span);
+        if (run.edge_count > 0 && run.first_edge + run.edge_count == span.first_edge) {
+            run.edge_count += span.edge_count;
+            continue;
+        }
+        alias_edges_.draw(run);
+        run = span;
     }
-    if (begun) alias_edges_.end();
+    if (!begun) return;
+    alias_edges_.draw(run);
+    alias_edges_.end();
 }
 
 }  // namespace nq::npr::technical
