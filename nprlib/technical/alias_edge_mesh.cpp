@@ -65,19 +65,39 @@ std::vector<std::array<uint32_t, 4>> edge_records(const adjacency::EdgeTable& ta
     return out;
 }
 
-// For each triangle side, the triangle sharing it with opposite winding, when exactly two
-// triangles use that side.
-std::vector<std::array<int32_t, 3>> side_twins(const std::vector<AliasEdgeMesh::Triangle>& tris) {
+// Per MDL vertex, an id shared by every MDL vertex at the same welded position (a skin seam
+// duplicates vertices in the file); vertices no welded face uses keep an id of their own.
+std::vector<uint32_t> welded_ids(const adjacency::BuiltMesh& built, uint32_t vertex_count) {
+    constexpr uint32_t kOwnId = 0x80000000u;
+    std::vector<uint32_t> ids(vertex_count);
+    for (uint32_t v = 0; v < vertex_count; ++v) ids[v] = kOwnId | v;
+    for (size_t f = 0; f < built.face_corners.size(); ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t mdl = built.face_corners[f][k];
+            const uint32_t mesh_vertex = built.face_vertices[f][k];
+            if (mdl < vertex_count && mesh_vertex < built.vertex_welded.size()) {
+                ids[mdl] = built.vertex_welded[mesh_vertex];
+            }
+        }
+    }
+    return ids;
+}
+
+// For each triangle side, the triangle sharing it (by welded position) with opposite winding,
+// when exactly two triangles use that side.
+std::vector<std::array<int32_t, 3>> side_twins(const std::vector<AliasEdgeMesh::Triangle>& tris,
+                                               const std::vector<uint32_t>& ids) {
     struct Side {
         uint32_t lo, hi, triangle, k;
         bool operator<(const Side& o) const { return lo != o.lo ? lo < o.lo : hi < o.hi; }
     };
+    const auto id = [&](uint32_t t, uint32_t k) { return ids[tris[t][k % 3]]; };
     std::vector<Side> sides;
     sides.reserve(tris.size() * 3);
     for (uint32_t t = 0; t < tris.size(); ++t) {
         for (uint32_t k = 0; k < 3; ++k) {
-            const uint32_t a = tris[t][k], b = tris[t][(k + 1) % 3];
-            sides.push_back({std::min(a, b), std::max(a, b), t, k});
+            const uint32_t a = id(t, k), b = id(t, k + 1);
+            if (a != b) sides.push_back({std::min(a, b), std::max(a, b), t, k});
         }
     }
     std::sort(sides.begin(), sides.end());
@@ -88,7 +108,7 @@ std::vector<std::array<int32_t, 3>> side_twins(const std::vector<AliasEdgeMesh::
         if (j - i == 2) {
             const Side &x = sides[i], &y = sides[i + 1];
             // Opposite winding: x runs a->b, y runs b->a.
-            if (tris[x.triangle][x.k] == tris[y.triangle][(y.k + 1) % 3]) {
+            if (id(x.triangle, x.k) == id(y.triangle, y.k + 1)) {
                 twins[x.triangle][x.k] = static_cast<int32_t>(y.triangle);
                 twins[y.triangle][y.k] = static_cast<int32_t>(x.triangle);
             }
@@ -120,7 +140,7 @@ std::unique_ptr<AliasEdgeMesh> AliasEdgeMesh::create(const nqr_alias_model& mode
     mesh->triangles_ = file_triangles(model);
     mesh->shadow_triangles_ = technical::shadow_triangles(recovered.mesh);
     if (mesh->shadow_triangles_.empty()) mesh->shadow_triangles_ = mesh->triangles_;
-    mesh->twins_ = side_twins(mesh->triangles_);
+    mesh->twins_ = side_twins(mesh->triangles_, welded_ids(recovered.mesh, model.num_vertices));
     mesh->facing_away_.reserve(mesh->triangles_.size());
     mesh->skin_coords_ = front_skin_coords(model);
     return mesh;

@@ -9,9 +9,11 @@
 //     borders (the far corner is face0's own third corner) outline from either side;
 //   - the paper's thick back-face lines, for models whose adjacency is not trustworthy: the
 //     edges of every back-facing triangle of the file (no adjacency needed), less those it
-//     shares, in the file's own indices and with opposite winding, with one other triangle that
-//     faces away too: such an edge lies on the far side of the model, where front faces hide it
-//     (only through a hole in an open model could it show).
+//     shares, at the same welded positions and with opposite winding, with exactly one other
+//     triangle that faces away too: such an edge lies on the far side of the model, where front
+//     faces hide it (only through a hole in an open model could it show). Welded positions,
+//     not the file's indices, so that skin seams (vertices the file duplicates) do not count
+//     as open edges.
 // The adjacency verdict says whether true edges can be trusted. No GL here: AliasEdgeDrawer
 // turns what find_edges returns into quads.
 #pragma once

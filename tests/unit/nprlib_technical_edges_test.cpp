@@ -24,10 +24,10 @@ namespace {
 using technical::AliasEdgeDrawer;
 using technical::AliasEdgeMesh;
 using technical::BackfaceLines;
+using technical::EdgeColorMode;
 using technical::EdgeKind;
 using technical::EdgeQuery;
 using technical::FoundEdge;
-using technical::EdgeColorMode;
 using technical::TechnicalSettings;
 
 const Rgb kBackground{0, 0, 0};
@@ -111,6 +111,23 @@ void make_broken_cube(AliasBuilder& b, uint8_t skin) {
         add_vertex(b, p);
     }
     for (int apex : {10, 11, 12}) b.triangles.push_back({1, 8, apex, 9});
+}
+
+// The cube with a skin seam down its edge x = y = -8: the -Y face uses copies (8, 9) of that
+// edge's two vertices (0, 4), as a file does where the skin is cut.
+void make_seamed_cube(AliasBuilder& b, uint8_t skin) {
+    make_cube(b, skin);
+    add_vertex(b, {0, 0, 0});
+    add_vertex(b, {0, 0, 16});
+    for (auto& t : b.triangles) {
+        bool minus_y = true;
+        for (int k = 1; k < 4; ++k) minus_y = minus_y && b.poses[0][t[k]][1] == 0;
+        if (!minus_y) continue;
+        for (int k = 1; k < 4; ++k) {
+            if (t[k] == 0) t[k] = 8;
+            if (t[k] == 4) t[k] = 9;
+        }
+    }
 }
 
 // A thin wall across the x axis, 120 units square.
@@ -393,6 +410,10 @@ TEST_F(TechnicalEdgesTest, BackfaceLinesKeepTheEdgesOfHiddenTrianglesThatCanShow
     // face away keep all their sides.
     TestModel& broken = add_model([](AliasBuilder& b) { make_broken_cube(b, kGrey); });
     EXPECT_GT(found_kinds(broken, {100.0f, 70.0f, 40.0f}, query)[3], 6);
+    // A seam between two faces that both face away hides the edge as well as a shared vertex
+    // pair does: the same six rim edges as the plain cube.
+    TestModel& seamed = add_model([](AliasBuilder& b) { make_seamed_cube(b, kGrey); });
+    EXPECT_EQ(found_kinds(seamed, {100.0f, 70.0f, 40.0f}, query), (std::array<int, 4>{0, 0, 0, 6}));
 }
 
 TEST_F(TechnicalEdgesTest, UnreadableModelIsRefusedWithAReason) {
