@@ -186,13 +186,13 @@ void TechnicalRenderer::draw_alias_entities(const nqr_frame* frame) {
     draw_faces(view, AliasPass::opaque);
     pass_end();
     pass_begin("edges");
-    draw_alias_edges(view, edge_uniforms, AliasPass::opaque);
+    draw_alias_edges(edge_uniforms, AliasPass::opaque);
     pass_end();
     draw_faces(view, AliasPass::translucent);
-    draw_alias_edges(view, edge_uniforms, AliasPass::translucent);
+    draw_alias_edges(edge_uniforms, AliasPass::translucent);
     glDepthRange(0.0, kViewModelDepthMax);
     draw_faces(view, AliasPass::view_model);
-    draw_alias_edges(view, edge_uniforms, AliasPass::view_model);
+    draw_alias_edges(edge_uniforms, AliasPass::view_model);
     classic::end_classic_pass();
 }
 
@@ -283,8 +283,7 @@ bool TechnicalRenderer::edges_fully_faded(const AliasItem& item,
 }
 
 // Entities of one pass whose edges lie next to each other in the batch go in one draw.
-void TechnicalRenderer::draw_alias_edges(const classic::FrameView& view,
-                                         const EdgeFrameUniforms& uniforms, AliasPass pass) {
+void TechnicalRenderer::draw_alias_edges(const EdgeFrameUniforms& uniforms, AliasPass pass) {
     EdgeSpan run{0, 0};
     bool begun = false;
     for (const AliasItem& item : items_) {

@@ -73,8 +73,7 @@ class TechnicalRenderer {
     void gather_alias_entities(const nqr_frame& frame, const classic::FrameView& view);
     ShadowPasses shadow_passes(const AliasItem& item, const classic::FrameView& view) const;
     void draw_faces(const classic::FrameView& view, AliasPass pass);
-    void draw_alias_edges(const classic::FrameView& view, const EdgeFrameUniforms& uniforms,
-                          AliasPass pass);
+    void draw_alias_edges(const EdgeFrameUniforms& uniforms, AliasPass pass);
     bool edges_fully_faded(const AliasItem& item, const classic::FrameView& view) const;
     float shadow_distance_fade(float distance) const;
     void draw_brush_entity_edges(const nqr_frame& frame, const classic::FrameView& view);
