@@ -18,8 +18,9 @@ std::unique_ptr<AliasModelGpu> AliasModelGpu::create(gl::ObjectTracker* tracker,
     if (!validate_alias_model(model, error)) return nullptr;
     std::unique_ptr<AliasModelGpu> gpu(new AliasModelGpu());
     gpu->model_ = &model;
-    const AliasMesh mesh = build_alias_mesh(model);
+    AliasMesh mesh = build_alias_mesh(model);
     if (!gpu->upload_poses(tracker, mesh.pose_texels, error)) return nullptr;
+    gpu->pose_texels_ = std::move(mesh.pose_texels);
 
     gpu->vertex_array_ = gl::VertexArray::create(tracker);
     gpu->vertices_ = gl::Buffer::create(tracker);

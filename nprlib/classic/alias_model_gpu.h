@@ -29,6 +29,9 @@ class AliasModelGpu {
     const nqr_alias_model& model() const { return *model_; }
     GLuint vertex_array() const { return vertex_array_.id(); }
     GLuint pose_texture() const { return pose_texture_.id(); }
+    // The pose texture's texels on the CPU (alias_mesh.h's layout), for drawers that blend
+    // normals there.
+    const std::vector<uint8_t>& pose_texels() const { return pose_texels_; }
     GLsizei index_count() const { return index_count_; }
     bool holey() const { return (model_->flags & kAliasFlagHoley) != 0; }
 
@@ -50,6 +53,7 @@ class AliasModelGpu {
     gl::Texture pose_texture_;
     GLsizei index_count_ = 0;
     std::vector<std::vector<SkinImageGpu>> skins_;
+    std::vector<uint8_t> pose_texels_;
 };
 
 }  // namespace nq::npr::classic

@@ -3,77 +3,35 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstddef>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "classic/abi_access.h"
-#include "classic/alias_pose_glsl.h"
 #include "technical/alias_pose.h"
-#include "technical/shading_glsl.h"
+#include "technical/shading_model.h"
 
 namespace nq::npr::technical {
 namespace {
 
-// The shading pass, after the pose and shading libraries: one point per MDL vertex of one
-// entity (gl_VertexID - u_first_row is the MDL vertex), captured, never rasterised.
-constexpr char kShadingBody[] = R"(
-layout(location = 0) in vec2 a_uv;
-uniform int u_first_row;
-uniform sampler2D u_skin;
-uniform mat4 u_model;
-uniform mat4 u_model_view;
-uniform mat3 u_normal_to_world;
-uniform vec3 u_eye_world;
-uniform vec3 u_light_direction;
-out vec4 f_view;    // view-space position, distance from the eye
-out vec4 f_shaded;  // the surface colour shaded there
-void main() {
-    int vertex = gl_VertexID - u_first_row;
-    vec3 position = pose_position(vertex);
-    vec3 normal = u_normal_to_world * pose_normal(vertex);
-    float len = length(normal);
-    normal = len > 1e-6 ? normal / len : vec3(0.0, 0.0, 1.0);
-    vec3 shaded = technical_shade(surface_kd(u_skin, a_uv, 0.0), normal, u_light_direction,
-                                  position.z);
-    vec3 world = (u_model * vec4(position, 1.0)).xyz;
-    f_view = vec4((u_model_view * vec4(position, 1.0)).xyz, length(world - u_eye_world));
-    f_shaded = vec4(shaded, 1.0);
-    gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
-}
-)";
-constexpr const char* kShadedOutputs[] = {"f_view", "f_shaded"};
-constexpr int kShadedTexelsPerVertex = 2;
-
-// The quads, after the edge libraries: each vertex reads its edge's two ends.
+// The quads, after the edge libraries: each vertex carries both ends of its edge.
 constexpr char kQuadBody[] = R"(
-layout(location = 0) in uvec2 a_ends;  // own, other: rows of u_shaded
-layout(location = 1) in uint a_side_and_kind;
-uniform samplerBuffer u_shaded;
+layout(location = 0) in vec4 a_own;     // this end (view space), its distance from the eye
+layout(location = 1) in vec3 a_other;   // the other end (view space)
+layout(location = 2) in vec4 a_shaded;  // the colour shaded here; alpha: side | kind << 1
 void main() {
-    int side = int(a_side_and_kind & 1u);
-    int kind = int(a_side_and_kind >> 1u);
-    vec4 own = texelFetch(u_shaded, int(a_ends.x) * 2);
-    vec4 shaded = texelFetch(u_shaded, int(a_ends.x) * 2 + 1);
-    vec4 other = texelFetch(u_shaded, int(a_ends.y) * 2);
-    g_color = edge_color(kind, shaded.rgb, own.w);
-    gl_Position = edge_corner_at(own.xyz, other.xyz, kind, side);
+    int side_and_kind = int(a_shaded.a * 255.0 + 0.5);
+    int kind = side_and_kind >> 1;
+    g_color = edge_color(kind, a_shaded.rgb, a_own.w);
+    gl_Position = edge_corner_at(a_own.xyz, a_other, kind, side_and_kind & 1);
 }
 )";
 
-constexpr int kUnitSkin = 0;
-constexpr int kUnitPoses = 1;
-constexpr int kUnitShaded = 0;
-// Quad corners: 16 MB of ring, 4 MB (350k corners) a push; skin coordinates ride along.
+// Quad corners: 16 MB of ring, 4 MB (130k corners) a push.
 constexpr size_t kStreamBytes = size_t{16} << 20;
-
-glm::vec3 light_direction(const nqr_entity& entity) {
-    const nqr_entity_light& light = entity.light;
-    if (light.size < sizeof(nqr_entity_light)) return {0.0f, 0.0f, 1.0f};
-    const glm::vec3 direction = glm::make_vec3(light.direction);
-    const float len = glm::length(direction);
-    return len > 1e-6f ? direction / len : glm::vec3(0.0f, 0.0f, 1.0f);
-}
 
 std::vector<uint32_t> quad_pattern(size_t quads) {
     std::vector<uint32_t> indices;
@@ -89,44 +47,86 @@ const void* at(size_t offset) {
     return reinterpret_cast<const void*>(offset);
 }
 
+uint8_t unorm8(float value) {
+    return static_cast<uint8_t>(std::clamp(value, 0.0f, 1.0f) * 255.0f + 0.5f);
+}
+
 }  // namespace
+
+ChainTolerance chain_tolerance(const EdgeFrameUniforms& frame, const EdgeSettings& settings) {
+    ChainTolerance out;
+    out.pixels = settings.merge_pixels;
+    const float scale = frame.projection[1][1] * frame.viewport.y;
+    out.units_per_pixel_per_depth = scale > 0.0f ? 2.0f / scale : 0.0f;
+    return out;
+}
+
+// Shades one entity's edge ends: view position, distance and technical tone per MDL vertex.
+class AliasEdgeDrawer::EndShader {
+  public:
+    EndShader(const classic::FrameView& view, const ShadingSettings& shading,
+              const nqr_entity& entity, const classic::AliasModelGpu& faces, const glm::vec3* pose,
+              const SkinSample& skin)
+        : shading_(shading),
+          skin_(skin),
+          pose_(pose),
+          st_(faces.model().st),
+          normals_(faces.model(), faces.pose_texels(), entity),
+          light_(tone_light(entity)) {
+        const glm::mat4 model = classic::mat4_from(entity.model_matrix);
+        model_view_ = view.view * model;
+        normal_to_world_ = glm::inverseTranspose(glm::mat3(model));
+    }
+
+    glm::vec3 view_position(uint32_t v) const {
+        return glm::vec3(model_view_ * glm::vec4(pose_[v], 1.0f));
+    }
+
+    std::array<uint8_t, 3> colour(uint32_t v) const {
+        const glm::vec3 c = technical_shade(shading_, light_, kd(v), world_normal(v), pose_[v].z);
+        return {unorm8(c.r), unorm8(c.g), unorm8(c.b)};
+    }
+
+  private:
+    glm::vec3 world_normal(uint32_t v) const {
+        if (!normals_.valid()) return {0.0f, 0.0f, 1.0f};
+        const glm::vec3 n = normal_to_world_ * normals_.at(v);
+        const float len = glm::length(n);
+        return len > 1e-6f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+
+    glm::vec3 kd(uint32_t v) const {
+        const int32_t* st = st_ + size_t(v) * 3;  // on-seam flag, s, t: the front side
+        return skin_.kd(st[1], st[2], shading_.texture_blend);
+    }
+
+    const ShadingSettings& shading_;
+    const SkinSample& skin_;
+    const glm::vec3* pose_;
+    const int32_t* st_;
+    PoseNormals normals_;
+    ToneLight light_;
+    glm::mat4 model_view_;
+    glm::mat3 normal_to_world_;
+};
 
 bool AliasEdgeDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
     reset();
-    const std::string shading = std::string("#version 330 core\n") + classic::kAliasPoseLibrary +
-                                kShadingLibrary + kShadingBody;
-    gl::ProgramSource shading_source{"technical edge vertices", shading.c_str(), nullptr};
-    shading_source.feedback_varyings = kShadedOutputs;
-    shading_source.feedback_count = 2;
-    gl::ProgramBuild shading_build = gl::Program::build(shading_source, tracker);
     const std::string quads =
         std::string("#version 330 core\n") + kEdgeLibrary + kEdgeVertexLibrary + kQuadBody;
     gl::ProgramBuild quads_build =
         gl::Program::build({"technical alias edges", quads.c_str(), kEdgeFragment}, tracker);
-    if (!shading_build.ok() || !quads_build.ok()) {
-        error = shading_build.ok() ? quads_build.error : shading_build.error;
+    if (!quads_build.ok()) {
+        error = quads_build.error;
         return false;
     }
-    shading_ = std::move(shading_build.program);
     quads_ = std::move(quads_build.program);
-    gl::bind_sampler_units(shading_, {"u_skin", "u_poses"});
-    gl::bind_sampler_units(quads_, {"u_shaded"});
     glUseProgram(0);
     if (!corner_stream_.create(tracker, kStreamBytes)) {
         error = "technical alias edges: cannot create the edge stream buffer";
         return false;
     }
-    max_edges_ = corner_stream_.max_push() / (4 * sizeof(Corner) + 2 * sizeof(uint32_t));
-
-    shaded_ = gl::Buffer::create(tracker);
-    glBindBuffer(GL_TEXTURE_BUFFER, shaded_.id());
-    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr{kMaxShadedVertices} * kShadedTexelsPerVertex * 16,
-                 nullptr, GL_DYNAMIC_COPY);
-    shaded_texture_ = gl::Texture::create(tracker);
-    glBindTexture(GL_TEXTURE_BUFFER, shaded_texture_.id());
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, shaded_.id());
-    glBindTexture(GL_TEXTURE_BUFFER, 0);
-    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    max_edges_ = corner_stream_.max_push() / (4 * sizeof(Corner));
 
     const std::vector<uint32_t> indices = quad_pattern(max_edges_);
     quad_indices_ = gl::Buffer::create(tracker);
@@ -135,72 +135,113 @@ bool AliasEdgeDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, quad_indices_.id());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * 4),
                  indices.data(), GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);  // pointed at each frame's corners by upload()
-    glEnableVertexAttribArray(1);
-    points_array_ = gl::VertexArray::create(tracker);
-    glBindVertexArray(points_array_.id());
-    glEnableVertexAttribArray(0);
+    for (GLuint attribute = 0; attribute < 3; ++attribute) {
+        glEnableVertexAttribArray(attribute);  // pointed at each frame's corners by upload()
+    }
     glBindVertexArray(0);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
     corners_.reserve(4096);
     found_.reserve(1024);
-    shaded_entities_.reserve(256);
     return true;
 }
 
 void AliasEdgeDrawer::reset() {
-    points_array_.reset();
     quads_array_.reset();
     quad_indices_.reset();
-    shaded_texture_.reset();
-    shaded_.reset();
     corner_stream_.reset();
     quads_.reset();
-    shading_.reset();
-    begin_frame();
+    clear();
 }
 
-void AliasEdgeDrawer::begin_frame() {
+void AliasEdgeDrawer::clear() {
     corners_.clear();
-    skin_coords_.clear();
-    shaded_entities_.clear();
-    shaded_rows_ = 0;
     uploaded_ = false;
 }
 
+void AliasEdgeDrawer::begin_frame(const classic::FrameView& view, const ShadingSettings& shading,
+                                  const ChainTolerance& chains) {
+    clear();
+    view_ = view;
+    shading_ = shading;
+    chain_tolerance_ = chains;
+}
+
+// Stamps instead of clearing: a new stamp per entity makes every end unplaced and unshaded.
+void AliasEdgeDrawer::new_entity_stamp(uint32_t vertex_count) {
+    if (end_views_.size() < vertex_count) {
+        end_views_.resize(vertex_count);
+        end_colours_.resize(vertex_count);
+        view_stamps_.resize(vertex_count, 0);
+        colour_stamps_.resize(vertex_count, 0);
+    }
+    if (++stamp_ == 0) {
+        std::fill(view_stamps_.begin(), view_stamps_.end(), 0);
+        std::fill(colour_stamps_.begin(), colour_stamps_.end(), 0);
+        stamp_ = 1;
+    }
+}
+
 EdgeSpan AliasEdgeDrawer::add_entity(const nqr_entity& entity, const classic::AliasModelGpu& faces,
-                                     GLuint skin_texture, const AliasEdgeMesh& mesh,
-                                     const glm::vec3* pose, const EdgeSettings& settings) {
+                                     const AliasEdgeMesh& mesh, const glm::vec3* pose,
+                                     const SkinSample& skin, const EdgeSettings& settings) {
     EdgeSpan span{corners_.size() / 4, 0};
     const EdgeQuery query = plan_edge_query(mesh, settings);
-    const uint32_t rows = mesh.vertex_count();
-    if (!query.any() || !pose || uploaded_ || rows > kMaxShadedVertices - shaded_rows_) {
+    if (!query.any() || !pose || uploaded_ || faces.model().num_vertices != mesh.vertex_count()) {
         return span;
     }
     found_.clear();
     mesh.find_edges(pose, glm::make_vec3(entity.eye_model), query, found_);
+    if (found_.empty()) return span;
+    new_entity_stamp(mesh.vertex_count());
+    const EndShader shader(view_, shading_, entity, faces, pose, skin);
+    place_ends(shader);
+    chains_.simplify(found_, mesh.seam_representatives(), end_views_.data(), chain_tolerance_);
     // What one push cannot hold is left out (tens of thousands of edges in one frame).
     const size_t room = max_edges_ - std::min(max_edges_, span.first_edge);
     span.edge_count = std::min(found_.size(), room);
-    if (span.edge_count == 0) return span;
-    const uint32_t first = shaded_rows_;
-    for (size_t i = 0; i < span.edge_count; ++i) {
-        const FoundEdge& e = found_[i];
-        const uint32_t kind = static_cast<uint32_t>(e.kind) << 1;
-        const uint32_t a = first + e.v0, b = first + e.v1;
-        corners_.push_back({a, b, kind | 0u});
-        corners_.push_back({a, b, kind | 1u});
-        // Seen from the far end the sides swap: (b, 0) lies beside (a, 1).
-        corners_.push_back({b, a, kind | 0u});
-        corners_.push_back({b, a, kind | 1u});
-    }
-    shaded_entities_.push_back({&entity, &faces, skin_texture, first});
-    for (const glm::vec2& uv : mesh.skin_coords()) skin_coords_.push_back(uv);
-    shaded_rows_ += rows;
+    append_quads(shader, span.edge_count);
     return span;
 }
 
-void AliasEdgeDrawer::upload(const classic::FrameView& view, const ShadingSettings& shading) {
+void AliasEdgeDrawer::place_ends(const EndShader& shader) {
+    for (const FoundEdge& e : found_) {
+        for (const uint32_t v : {e.v0, e.v1}) {
+            if (view_stamps_[v] == stamp_) continue;
+            end_views_[v] = shader.view_position(v);
+            view_stamps_[v] = stamp_;
+        }
+    }
+}
+
+void AliasEdgeDrawer::append_quads(const EndShader& shader, size_t count) {
+    const auto colour = [&](uint32_t v) -> const std::array<uint8_t, 3>& {
+        if (colour_stamps_[v] != stamp_) {
+            end_colours_[v] = shader.colour(v);
+            colour_stamps_[v] = stamp_;
+        }
+        return end_colours_[v];
+    };
+    for (size_t i = 0; i < count; ++i) {
+        const FoundEdge& e = found_[i];
+        const uint8_t kind = static_cast<uint8_t>(static_cast<uint32_t>(e.kind) << 1);
+        const auto corner = [&](uint32_t own, uint32_t other, uint8_t side) {
+            const std::array<uint8_t, 3>& c = colour(own);
+            const glm::vec3& view = end_views_[own];
+            // The view transform is rigid: the distance from the eye is the view-space length.
+            corners_.push_back({view,
+                                glm::length(view),
+                                end_views_[other],
+                                {c[0], c[1], c[2]},
+                                static_cast<uint8_t>(kind | side)});
+        };
+        corner(e.v0, e.v1, 0);
+        corner(e.v0, e.v1, 1);
+        // Seen from the far end the sides swap: (v1, 0) lies beside (v0, 1).
+        corner(e.v1, e.v0, 0);
+        corner(e.v1, e.v0, 1);
+    }
+}
+
+void AliasEdgeDrawer::upload() {
     uploaded_ = true;
     if (corners_.empty()) return;
     const size_t offset = corner_stream_.push(corners_.data(), corners_.size() * sizeof(Corner), 4);
@@ -210,66 +251,18 @@ void AliasEdgeDrawer::upload(const classic::FrameView& view, const ShadingSettin
     }
     glBindVertexArray(quads_array_.id());
     glBindBuffer(GL_ARRAY_BUFFER, corner_stream_.id());
-    glVertexAttribIPointer(0, 2, GL_UNSIGNED_INT, sizeof(Corner),
-                           at(offset + offsetof(Corner, own)));
-    glVertexAttribIPointer(1, 1, GL_UNSIGNED_INT, sizeof(Corner),
-                           at(offset + offsetof(Corner, side_and_kind)));
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(Corner), at(offset));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Corner),
+                          at(offset + offsetof(Corner, other)));
+    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(Corner),
+                          at(offset + offsetof(Corner, shaded)));
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindVertexArray(0);
-    shade_vertices(view, shading);
-}
-
-void AliasEdgeDrawer::shade_vertices(const classic::FrameView& view,
-                                     const ShadingSettings& shading) {
-    const size_t uv_offset = corner_stream_.push(
-        skin_coords_.data(), skin_coords_.size() * sizeof(glm::vec2), sizeof(glm::vec2));
-    if (uv_offset == gl::StreamBuffer::kNoSpace) {
-        corners_.clear();
-        return;
-    }
-    shading_.use();
-    set_shading_uniforms(shading_, shading);
-    glUniform3fv(shading_.location("u_eye_world"), 1, glm::value_ptr(view.eye));
-    glBindVertexArray(points_array_.id());
-    glBindBuffer(GL_ARRAY_BUFFER, corner_stream_.id());
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), at(uv_offset));
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glEnable(GL_RASTERIZER_DISCARD);
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, shaded_.id());
-    glBeginTransformFeedback(GL_POINTS);
-    for (const ShadedEntity& shaded : shaded_entities_) {
-        const nqr_entity& entity = *shaded.entity;
-        const glm::mat4 model = classic::mat4_from(entity.model_matrix);
-        const glm::mat4 model_view = view.view * model;
-        const glm::mat3 normal_to_world = glm::inverseTranspose(glm::mat3(model));
-        glUniform1i(shading_.location("u_first_row"), static_cast<GLint>(shaded.first_row));
-        glUniformMatrix4fv(shading_.location("u_model"), 1, GL_FALSE, entity.model_matrix);
-        glUniformMatrix4fv(shading_.location("u_model_view"), 1, GL_FALSE,
-                           glm::value_ptr(model_view));
-        glUniformMatrix3fv(shading_.location("u_normal_to_world"), 1, GL_FALSE,
-                           glm::value_ptr(normal_to_world));
-        const glm::vec3 light = light_direction(entity);
-        glUniform3fv(shading_.location("u_light_direction"), 1, glm::value_ptr(light));
-        set_entity_light_uniforms(shading_, entity);
-        classic::set_alias_pose_uniforms(shading_, *shaded.faces, entity, kUnitPoses);
-        glActiveTexture(GL_TEXTURE0 + kUnitSkin);
-        glBindTexture(GL_TEXTURE_2D, shaded.skin);
-        glDrawArrays(GL_POINTS, static_cast<GLint>(shaded.first_row),
-                     static_cast<GLsizei>(shaded.faces->model().num_vertices));
-    }
-    glEndTransformFeedback();
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-    glDisable(GL_RASTERIZER_DISCARD);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glActiveTexture(GL_TEXTURE0);
 }
 
 void AliasEdgeDrawer::begin(const EdgeFrameUniforms& frame_uniforms, const EdgeSettings& settings) {
     quads_.use();
     set_edge_uniforms(quads_, settings, frame_uniforms);
-    glActiveTexture(GL_TEXTURE0 + kUnitShaded);
-    glBindTexture(GL_TEXTURE_BUFFER, shaded_texture_.id());
     glBindVertexArray(quads_array_.id());
 }
 
@@ -282,21 +275,18 @@ void AliasEdgeDrawer::draw(EdgeSpan span) {
 void AliasEdgeDrawer::end() {
     glBindVertexArray(0);
     glUseProgram(0);
-    glBindTexture(GL_TEXTURE_BUFFER, 0);
-    glActiveTexture(GL_TEXTURE0);
 }
 
 void AliasEdgeDrawer::draw_entity(const classic::FrameView& view,
                                   const EdgeFrameUniforms& frame_uniforms, const nqr_entity& entity,
                                   const classic::AliasModelGpu& faces, const AliasEdgeMesh& edges,
-                                  GLuint skin_texture, const TechnicalSettings& settings) {
+                                  const SkinSample& skin, const TechnicalSettings& settings) {
     if (!quads_ || !classic::has_known_prefix(&entity)) return;
     pose_.resize(edges.vertex_count());
     blend_alias_pose(faces.model(), entity, pose_.data());
-    begin_frame();
-    const EdgeSpan span =
-        add_entity(entity, faces, skin_texture, edges, pose_.data(), settings.edges);
-    upload(view, settings.shading);
+    begin_frame(view, settings.shading, chain_tolerance(frame_uniforms, settings.edges));
+    const EdgeSpan span = add_entity(entity, faces, edges, pose_.data(), skin, settings.edges);
+    upload();
     begin(frame_uniforms, settings.edges);
     draw(span);
     end();

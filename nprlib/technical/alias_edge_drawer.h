@@ -1,24 +1,22 @@
 // Silhouette and crease edges of alias models (MDL) in the technical style. The edges are found
-// on the CPU (AliasEdgeMesh::find_edges, on the pose blended once per frame) and drawn without a
-// geometry shader, in two GPU steps:
-//   - shading: one transform-feedback pass over every MDL vertex of every entity with edges
-//     (points, rasteriser off) writes its view-space position, distance from the eye and the
-//     surface colour shaded there (technical_shade on the pose normal) into a buffer: each
-//     vertex is shaded once, however many edges meet at it;
-//   - quads: each edge becomes a quad of constant pixel width (edge_glsl.h), four vertices that
-//     only know the indices of the edge's two ends in that buffer; the vertex shader reads the
-//     ends, colours the edge (white addition, distance fade) and offsets the corner on screen.
+// on the CPU (AliasEdgeMesh::find_edges, on the pose blended once per frame), joined where a
+// chain of them runs straight on screen (edge_chains.h), their ends shaded
+// there too (shading_model.h: each end's view-space position, distance from the eye and the
+// surface colour under it, once per vertex however many edges meet at it), and each edge becomes
+// a quad of constant pixel width (edge_glsl.h): four vertices carrying both ends, whose vertex
+// shader colours the edge (white addition, distance fade) and offsets the corner on screen. No
+// geometry shader and no GPU pass before the quads.
 // A frame's edges are gathered first (begin_frame, add_entity per entity, upload: the corners
-// in one stream upload, then the shading pass) and drawn pass by pass (begin, draw per span of
-// edges, end): no per-entity state, so the spans of neighbouring entities go in one draw.
+// in one stream upload) and drawn pass by pass (begin, draw per span of edges, end): no
+// per-entity state, so the spans of neighbouring entities go in one draw.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "classic/alias_model_gpu.h"
@@ -28,7 +26,9 @@
 #include "gl/stream_buffer.h"
 #include "nqr_renderer.h"
 #include "technical/alias_edge_mesh.h"
+#include "technical/edge_chains.h"
 #include "technical/edge_glsl.h"
+#include "technical/skin_tones.h"
 #include "technical/technical_settings.h"
 
 namespace nq::npr::technical {
@@ -39,24 +39,26 @@ struct EdgeSpan {
     size_t edge_count = 0;
 };
 
+// The chain tolerance for a frame: settings.merge_pixels at the frame's pixel size.
+ChainTolerance chain_tolerance(const EdgeFrameUniforms& frame, const EdgeSettings& settings);
+
 class AliasEdgeDrawer {
   public:
-    // Vertices the shading pass can hold in one frame (all entities with edges together).
-    static constexpr uint32_t kMaxShadedVertices = 1u << 17;
-
     bool init(gl::ObjectTracker* tracker, std::string& error);
     void reset();
 
-    // Gathering. begin_frame empties the batch; add_entity finds the entity's edges on `pose`
-    // (mesh.vertex_count() model-space positions) seen from entity.eye_model, appends their
-    // quads and schedules its vertices for shading (skin_texture: mipmapped, k_d is read from
-    // it; the pose normals come from `faces`); upload sends the quads and runs the shading
-    // pass (after the last add_entity, before drawing).
-    void begin_frame();
+    // Gathering. begin_frame empties the batch and takes the frame's camera, tones and the
+    // chain tolerance (EdgeSettings::merge_pixels);
+    // add_entity finds the entity's edges on `pose` (mesh.vertex_count() model-space positions)
+    // seen from entity.eye_model, shades their ends (normals from `faces`' pose texels, k_d from
+    // `skin`) and appends their quads; upload sends the quads (after the last add_entity,
+    // before drawing).
+    void begin_frame(const classic::FrameView& view, const ShadingSettings& shading,
+                     const ChainTolerance& chains);
     EdgeSpan add_entity(const nqr_entity& entity, const classic::AliasModelGpu& faces,
-                        GLuint skin_texture, const AliasEdgeMesh& mesh, const glm::vec3* pose,
+                        const AliasEdgeMesh& mesh, const glm::vec3* pose, const SkinSample& skin,
                         const EdgeSettings& settings);
-    void upload(const classic::FrameView& view, const ShadingSettings& shading);
+    void upload();
 
     // Drawing, after the entities' faces (the depth buffer holds them). begin starts from
     // frame_view.h's state, end restores it; the depth range is the caller's (the view model's
@@ -68,39 +70,45 @@ class AliasEdgeDrawer {
     // All of the above for one entity (its pose blended here).
     void draw_entity(const classic::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
                      const nqr_entity& entity, const classic::AliasModelGpu& faces,
-                     const AliasEdgeMesh& edges, GLuint skin_texture,
+                     const AliasEdgeMesh& edges, const SkinSample& skin,
                      const TechnicalSettings& settings);
 
     size_t edges_in_batch() const { return corners_.size() / 4; }
 
   private:
-    // One vertex of an edge's quad: the ends' rows in the shaded-vertex buffer. 12 bytes.
+    // One vertex of an edge's quad: both ends (view space), this end's distance from the eye
+    // and shaded colour. 32 bytes.
     struct Corner {
-        uint32_t own, other;
-        uint32_t side_and_kind;  // side (bit 0) | EdgeKind << 1
+        glm::vec3 own;
+        float distance;
+        glm::vec3 other;
+        uint8_t shaded[3];
+        uint8_t side_and_kind;  // side (bit 0) | EdgeKind << 1
     };
-    // An entity whose vertices the shading pass shades, from row `first_row` on.
-    struct ShadedEntity {
-        const nqr_entity* entity;
-        const classic::AliasModelGpu* faces;
-        GLuint skin;
-        uint32_t first_row;
-    };
-    void shade_vertices(const classic::FrameView& view, const ShadingSettings& shading);
+    class EndShader;
+    void clear();
+    void new_entity_stamp(uint32_t vertex_count);
+    void place_ends(const EndShader& shader);
+    void append_quads(const EndShader& shader, size_t count);
 
-    gl::Program quads_, shading_;
+    gl::Program quads_;
     gl::StreamBuffer corner_stream_;
-    gl::Buffer quad_indices_;     // 0 1 2 0 2 3 per quad, for every quad a push can hold
-    gl::Buffer shaded_;           // transform feedback output, 2 RGBA32F texels per vertex
-    gl::Texture shaded_texture_;  // the same buffer, as a buffer texture for the quads
-    gl::VertexArray quads_array_, points_array_;
+    gl::Buffer quad_indices_;  // 0 1 2 0 2 3 per quad, for every quad a push can hold
+    gl::VertexArray quads_array_;
     size_t max_edges_ = 0;
+    classic::FrameView view_;
+    ShadingSettings shading_;
+    ChainTolerance chain_tolerance_;
+    EdgeChains chains_;
     std::vector<Corner> corners_;
-    std::vector<ShadedEntity> shaded_entities_;
-    std::vector<glm::vec2> skin_coords_;  // per shaded row: its MDL vertex's skin coordinate
-    uint32_t shaded_rows_ = 0;
-    std::vector<FoundEdge> found_;  // scratch: one entity's edges
-    std::vector<glm::vec3> pose_;   // scratch: the convenience draw_entity's pose
+    // Scratch for one entity: its edges; by MDL vertex, the view-space positions and shaded
+    // colours of edge ends, valid where the stamps equal stamp_ (a new stamp per entity).
+    std::vector<FoundEdge> found_;
+    std::vector<glm::vec3> end_views_;
+    std::vector<std::array<uint8_t, 3>> end_colours_;
+    std::vector<uint32_t> view_stamps_, colour_stamps_;
+    uint32_t stamp_ = 0;
+    std::vector<glm::vec3> pose_;  // scratch: the convenience draw_entity's pose
     bool uploaded_ = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -12,16 +13,6 @@
 
 namespace nq::npr::technical {
 namespace {
-
-std::vector<glm::vec2> front_skin_coords(const nqr_alias_model& model) {
-    std::vector<glm::vec2> uv(model.num_vertices);
-    for (uint32_t v = 0; v < model.num_vertices; ++v) {
-        const int32_t* st = model.st + static_cast<size_t>(v) * 3;
-        uv[v] = {(static_cast<float>(st[1]) + 0.5f) / static_cast<float>(model.skin_width),
-                 (static_cast<float>(st[2]) + 0.5f) / static_cast<float>(model.skin_height)};
-    }
-    return uv;
-}
 
 bool usable_triangle(const nqr_alias_model& model, const int32_t* corners) {
     for (int k = 0; k < 3; ++k) {
@@ -67,7 +58,7 @@ std::vector<std::array<uint32_t, 4>> edge_records(const adjacency::EdgeTable& ta
 
 // Per MDL vertex, an id shared by every MDL vertex at the same welded position (a skin seam
 // duplicates vertices in the file); vertices no welded face uses keep an id of their own.
-std::vector<uint32_t> welded_ids(const adjacency::BuiltMesh& built, uint32_t vertex_count) {
+std::vector<uint32_t> welded_positions(const adjacency::BuiltMesh& built, uint32_t vertex_count) {
     constexpr uint32_t kOwnId = 0x80000000u;
     std::vector<uint32_t> ids(vertex_count);
     for (uint32_t v = 0; v < vertex_count; ++v) ids[v] = kOwnId | v;
@@ -81,6 +72,14 @@ std::vector<uint32_t> welded_ids(const adjacency::BuiltMesh& built, uint32_t ver
         }
     }
     return ids;
+}
+
+// Per MDL vertex, the first MDL vertex with its id.
+std::vector<uint32_t> representatives(const std::vector<uint32_t>& ids) {
+    std::unordered_map<uint32_t, uint32_t> first;
+    std::vector<uint32_t> out(ids.size());
+    for (uint32_t v = 0; v < ids.size(); ++v) out[v] = first.emplace(ids[v], v).first->second;
+    return out;
 }
 
 // For each triangle side, the triangle sharing it (by welded position) with opposite winding,
@@ -140,9 +139,10 @@ std::unique_ptr<AliasEdgeMesh> AliasEdgeMesh::create(const nqr_alias_model& mode
     mesh->triangles_ = file_triangles(model);
     mesh->shadow_triangles_ = technical::shadow_triangles(recovered.mesh);
     if (mesh->shadow_triangles_.empty()) mesh->shadow_triangles_ = mesh->triangles_;
-    mesh->twins_ = side_twins(mesh->triangles_, welded_ids(recovered.mesh, model.num_vertices));
+    const std::vector<uint32_t> welded = welded_positions(recovered.mesh, model.num_vertices);
+    mesh->twins_ = side_twins(mesh->triangles_, welded);
+    mesh->seam_representatives_ = representatives(welded);
     mesh->facing_away_.reserve(mesh->triangles_.size());
-    mesh->skin_coords_ = front_skin_coords(model);
     return mesh;
 }
 

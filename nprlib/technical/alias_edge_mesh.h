@@ -25,7 +25,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "adjacency/recovery_stats.h"
@@ -70,8 +69,9 @@ class AliasEdgeMesh {
     std::span<const Triangle> triangles() const { return triangles_; }
     // The triangles its shadow is cast with (shadow_mesh.h), likewise.
     std::span<const Triangle> shadow_triangles() const { return shadow_triangles_; }
-    // Per MDL vertex: its skin coordinate ((s + 0.5) / w, (t + 0.5) / h, front side of a seam).
-    std::span<const glm::vec2> skin_coords() const { return skin_coords_; }
+    // Per MDL vertex: the lowest-numbered MDL vertex at its welded position (skin seams
+    // duplicate vertices in the file), itself where there is no other.
+    std::span<const uint32_t> seam_representatives() const { return seam_representatives_; }
 
     // Appends to `out` the edges `query` asks for on `pose` (vertex_count() model-space
     // positions) seen from `eye` (model space). Each edge at most once.
@@ -93,7 +93,7 @@ class AliasEdgeMesh {
     // other way round, or -1 when there is none or the side has more than two triangles.
     std::vector<std::array<int32_t, 3>> twins_;
     mutable std::vector<uint8_t> facing_away_;  // scratch of find_backface_lines
-    std::vector<glm::vec2> skin_coords_;
+    std::vector<uint32_t> seam_representatives_;
     adjacency::RecoveryStats stats_;
     adjacency::Verdict verdict_;
 };

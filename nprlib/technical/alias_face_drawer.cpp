@@ -27,9 +27,7 @@ out vec2 v_uv;
 out vec3 v_world_normal;
 out vec3 v_view_normal;
 out float v_height;
-flat out vec3 v_kd_average;
 void main() {
-    v_kd_average = skin_average(u_skin);
     vec3 position = pose_position(int(a_pose_vertex));
     vec3 normal = pose_normal(int(a_pose_vertex));
     gl_Position = u_view_projection * (u_model * vec4(position, 1.0));
@@ -45,8 +43,8 @@ in vec2 v_uv;
 in vec3 v_world_normal;
 in vec3 v_view_normal;
 in float v_height;
-flat in vec3 v_kd_average;
 uniform sampler2D u_skin;
+uniform vec3 u_kd_average;
 uniform sampler2D u_fullbright;
 uniform vec3 u_light_direction;
 uniform float u_alpha;
@@ -58,8 +56,9 @@ vec3 unit_or_up(vec3 v) {
     return len > 1e-6 ? v / len : vec3(0.0, 0.0, 1.0);
 }
 void main() {
-    if (u_alpha_cutoff > 0.0 && texture(u_skin, v_uv).a < u_alpha_cutoff) discard;
-    vec3 kd = surface_kd_from(v_kd_average, u_skin, v_uv, -1.0);
+    vec4 texel = texture(u_skin, v_uv);
+    if (texel.a < u_alpha_cutoff) discard;  // cutoff 0: never
+    vec3 kd = surface_kd_from(u_kd_average, texel.rgb);
     vec3 shaded = technical_shade(kd, unit_or_up(v_world_normal), u_light_direction, v_height);
     o_color = vec4(shaded + texture(u_fullbright, v_uv).rgb, u_alpha);
     o_normal = vec4(unit_or_up(v_view_normal) * 0.5 + 0.5, 1.0);
@@ -74,23 +73,34 @@ constexpr float kHoleyAlphaCutoff = 0.666f;  // as the classic drawer
 }  // namespace
 
 bool AliasFaceDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
+    reset();
+    tracker_ = tracker;
+    black_ = gl::create_solid_texture(tracker, 0, 0, 0, 0);
+    // The default variant now, so that a broken shader shows at start-up.
+    return build_variant(shading_variant(ShadingSettings{}), error) != nullptr;
+}
+
+gl::Program* AliasFaceDrawer::build_variant(int variant, std::string& error) {
+    gl::Program& program = programs_[static_cast<size_t>(variant)];
+    if (program) return &program;
+    const std::string defines = shading_defines(variant);
     const std::string vertex =
-        std::string(kHeader) + classic::kAliasPoseLibrary + kShadingLibrary + kVertexBody;
-    const std::string fragment = std::string(kHeader) + kShadingLibrary + kFragmentBody;
+        std::string(kHeader) + defines + classic::kAliasPoseLibrary + kShadingLibrary + kVertexBody;
+    const std::string fragment = std::string(kHeader) + defines + kShadingLibrary + kFragmentBody;
     gl::ProgramBuild build =
-        gl::Program::build({"technical alias faces", vertex.c_str(), fragment.c_str()}, tracker);
+        gl::Program::build({"technical alias faces", vertex.c_str(), fragment.c_str()}, tracker_);
     if (!build.ok()) {
         error = build.error;
-        return false;
+        return nullptr;
     }
-    program_ = std::move(build.program);
-    gl::bind_sampler_units(program_, {"u_skin", "u_fullbright", "u_poses"});
-    black_ = gl::create_solid_texture(tracker, 0, 0, 0, 0);
-    return true;
+    program = std::move(build.program);
+    gl::bind_sampler_units(program, {"u_skin", "u_fullbright", "u_poses"});
+    return &program;
 }
 
 void AliasFaceDrawer::reset() {
-    program_.reset();
+    for (gl::Program& program : programs_) program.reset();
+    program_ = nullptr;
     black_.reset();
 }
 
@@ -102,38 +112,44 @@ void AliasFaceDrawer::set_light_direction(const nqr_entity& entity) {
         const float length = glm::length(sampled);
         if (length > 1e-6f) direction = sampled / length;
     }
-    glUniform3fv(program_.location("u_light_direction"), 1, glm::value_ptr(direction));
+    glUniform3fv(program_->location("u_light_direction"), 1, glm::value_ptr(direction));
 }
 
-void AliasFaceDrawer::begin(const classic::FrameView& view, const ShadingSettings& settings) {
-    program_.use();
-    glUniformMatrix4fv(program_.location("u_view_projection"), 1, GL_FALSE,
+bool AliasFaceDrawer::begin(const classic::FrameView& view, const ShadingSettings& settings) {
+    std::string error;
+    program_ = build_variant(shading_variant(settings), error);
+    if (!program_) return false;  // the default variant compiled: a driver failure
+    program_->use();
+    glUniformMatrix4fv(program_->location("u_view_projection"), 1, GL_FALSE,
                        glm::value_ptr(view.view_projection));
-    set_shading_uniforms(program_, settings);
+    set_shading_uniforms(*program_, settings);
     add_fullbright_ = settings.mode != ShadingMode::object_id;
     // Quake winds alias triangles clockwise seen from outside: cull the inside, as classic.
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CW);
     glCullFace(GL_BACK);
+    return true;
 }
 
 void AliasFaceDrawer::draw(const classic::FrameView& view, const nqr_entity& entity,
                            const classic::AliasModelGpu& model, GLuint skin_texture,
-                           GLuint fullbright_texture) {
+                           GLuint fullbright_texture, const glm::vec3& kd_average) {
     if (!program_ || skin_texture == 0) return;
     const glm::mat4 model_matrix = classic::mat4_from(entity.model_matrix);
-    glUniformMatrix4fv(program_.location("u_model"), 1, GL_FALSE, entity.model_matrix);
+    glUniformMatrix4fv(program_->location("u_model"), 1, GL_FALSE, entity.model_matrix);
     const glm::mat3 to_world = glm::inverseTranspose(glm::mat3(model_matrix));
-    glUniformMatrix3fv(program_.location("u_normal_to_world"), 1, GL_FALSE,
+    glUniformMatrix3fv(program_->location("u_normal_to_world"), 1, GL_FALSE,
                        glm::value_ptr(to_world));
     const glm::mat3 to_view = classic::normal_to_view(view, model_matrix);
-    glUniformMatrix3fv(program_.location("u_normal_to_view"), 1, GL_FALSE, glm::value_ptr(to_view));
-    classic::set_alias_pose_uniforms(program_, model, entity, kUnitPoses);
-    set_entity_light_uniforms(program_, entity);
+    glUniformMatrix3fv(program_->location("u_normal_to_view"), 1, GL_FALSE,
+                       glm::value_ptr(to_view));
+    classic::set_alias_pose_uniforms(*program_, model, entity, kUnitPoses);
+    set_entity_light_uniforms(*program_, entity);
     set_light_direction(entity);
+    glUniform3fv(program_->location("u_kd_average"), 1, glm::value_ptr(kd_average));
     const float alpha = classic::entity_alpha(entity.alpha);
-    glUniform1f(program_.location("u_alpha"), alpha);
-    glUniform1f(program_.location("u_alpha_cutoff"), model.holey() ? kHoleyAlphaCutoff : 0.0f);
+    glUniform1f(program_->location("u_alpha"), alpha);
+    glUniform1f(program_->location("u_alpha_cutoff"), model.holey() ? kHoleyAlphaCutoff : 0.0f);
 
     glActiveTexture(GL_TEXTURE0 + kUnitSkin);
     glBindTexture(GL_TEXTURE_2D, skin_texture);
@@ -166,10 +182,10 @@ void AliasFaceDrawer::end() {
 
 void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_entity& entity,
                                   const classic::AliasModelGpu& model, GLuint skin_texture,
-                                  GLuint fullbright_texture, const ShadingSettings& settings) {
-    if (!program_ || skin_texture == 0) return;
-    begin(view, settings);
-    draw(view, entity, model, skin_texture, fullbright_texture);
+                                  GLuint fullbright_texture, const glm::vec3& kd_average,
+                                  const ShadingSettings& settings) {
+    if (skin_texture == 0 || !begin(view, settings)) return;
+    draw(view, entity, model, skin_texture, fullbright_texture, kd_average);
     end();
 }
 

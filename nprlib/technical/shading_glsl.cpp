@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <iterator>
+#include <string>
 
 namespace nq::npr::technical {
 
 const char* const kShadingLibrary = R"(
-uniform int u_shading_mode;
 uniform float u_gooch_b, u_gooch_y, u_gooch_alpha, u_gooch_beta;
 uniform float u_splash_alpha, u_splash_p;
 uniform float u_metal_bands, u_texture_blend;
@@ -16,23 +16,13 @@ uniform float u_ambient, u_directional;
 uniform vec3 u_light_color;
 uniform vec3 u_object_color;
 
-// The skin's mean colour: its last (1x1) mip level, fetched without filtering.
-vec3 skin_average(sampler2D skin) {
-    ivec2 size = textureSize(skin, 0);
-    int last = 0;
-    for (int n = max(size.x, size.y); n > 1; n >>= 1) ++last;
-    return texelFetch(skin, ivec2(0), last).rgb;
-}
-
-// k_d from the skin's average, blended toward the texel at uv (lod < 0: implicit lod).
-vec3 surface_kd_from(vec3 average, sampler2D skin, vec2 uv, float lod) {
-    if (u_texture_blend <= 0.0) return average;
-    vec3 texel = lod < 0.0 ? texture(skin, uv).rgb : textureLod(skin, uv, lod).rgb;
+// k_d: the skin's average (computed on the CPU, skin_tones.h), blended toward the texel.
+vec3 surface_kd_from(vec3 average, vec3 texel) {
+#if TEXTURE_BLEND
     return mix(average, texel, u_texture_blend);
-}
-
-vec3 surface_kd(sampler2D skin, vec2 uv, float lod) {
-    return surface_kd_from(skin_average(skin), skin, uv, lod);
+#else
+    return average;
+#endif
 }
 
 vec3 gooch_tone(vec3 kd, float n_dot_l) {
@@ -51,32 +41,46 @@ vec3 metal_tone(vec3 kd, float n_dot_l, float height) {
 }
 
 vec3 technical_shade(vec3 kd, vec3 n, vec3 l, float height) {
+#if SHADING_MODE == 3
+    return u_object_color;
+#else
     float n_dot_l = clamp(dot(n, l), -1.0, 1.0);
-    vec3 color;
-    if (u_shading_mode == 3) return u_object_color;
-    if (u_shading_mode == 0) {
-        color = kd * (u_ambient + u_directional * max(n_dot_l, 0.0)) * u_light_color;
-    } else if (u_shading_mode == 2) {
-        color = metal_tone(kd, n_dot_l, height);
-    } else {
-        // l points toward the light and warm belongs on the lit side: t = (1 - n.l) / 2.
-        color = gooch_tone(kd, -n_dot_l);
-    }
+#if SHADING_MODE == 0
+    vec3 color = kd * (u_ambient + u_directional * max(n_dot_l, 0.0)) * u_light_color;
+#elif SHADING_MODE == 2
+    vec3 color = metal_tone(kd, n_dot_l, height);
+#else
+    // l points toward the light and warm belongs on the lit side: t = (1 - n.l) / 2.
+    vec3 color = gooch_tone(kd, -n_dot_l);
+#endif
+#if SPLASHBACK
     // Splash-back belongs to the technical tones; classic stays GLQuake's lighting.
-    if (u_splash_alpha > 0.0 && u_shading_mode != 0) {
-        color *= pow(u_splash_alpha * abs(n_dot_l) + (1.0 - u_splash_alpha), u_splash_p);
-    }
+    color *= pow(u_splash_alpha * abs(n_dot_l) + (1.0 - u_splash_alpha), u_splash_p);
+#endif
     return clamp(color, 0.0, 1.0);
+#endif
 }
 )";
 
+int shading_variant(const ShadingSettings& s) {
+    const bool splashback = s.splashback && s.splashback_alpha > 0.0f &&
+                            s.mode != ShadingMode::classic && s.mode != ShadingMode::object_id;
+    const bool blend = s.texture_blend > 0.0f && s.mode != ShadingMode::object_id;
+    return static_cast<int>(s.mode) * 4 + (splashback ? 2 : 0) + (blend ? 1 : 0);
+}
+
+std::string shading_defines(int variant) {
+    return "#define SHADING_MODE " + std::to_string(variant / 4) + "\n#define SPLASHBACK " +
+           std::to_string((variant >> 1) & 1) + "\n#define TEXTURE_BLEND " +
+           std::to_string(variant & 1) + "\n";
+}
+
 void set_shading_uniforms(gl::Program& program, const ShadingSettings& s) {
-    glUniform1i(program.location("u_shading_mode"), static_cast<int>(s.mode));
     glUniform1f(program.location("u_gooch_b"), s.blue);
     glUniform1f(program.location("u_gooch_y"), s.yellow);
     glUniform1f(program.location("u_gooch_alpha"), s.alpha);
     glUniform1f(program.location("u_gooch_beta"), s.beta);
-    glUniform1f(program.location("u_splash_alpha"), s.splashback ? s.splashback_alpha : 0.0f);
+    glUniform1f(program.location("u_splash_alpha"), s.splashback_alpha);
     glUniform1f(program.location("u_splash_p"), s.splashback_p);
     glUniform1f(program.location("u_metal_bands"), s.metal_bands);
     glUniform1f(program.location("u_texture_blend"), std::clamp(s.texture_blend, 0.0f, 1.0f));

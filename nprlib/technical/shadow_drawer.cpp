@@ -37,7 +37,7 @@ constexpr float kOffsetFactor = -1.0f;
 constexpr float kOffsetUnits = -2.0f;
 constexpr size_t kStreamBytes = size_t{16} << 20;
 
-void begin_shadow_state() {
+void begin_shadow_state(bool clear_stencil) {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
@@ -45,8 +45,10 @@ void begin_shadow_state() {
     glPolygonOffset(kOffsetFactor, kOffsetUnits);
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
-    glClearStencil(0);
-    glClear(GL_STENCIL_BUFFER_BIT);
+    if (clear_stencil) {
+        glClearStencil(0);
+        glClear(GL_STENCIL_BUFFER_BIT);
+    }
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 }
@@ -90,6 +92,7 @@ bool ShadowDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
 }
 
 void ShadowDrawer::reset() {
+    stencil_framebuffer_ = -1;
     vertex_array_.reset();
     index_stream_.reset();
     vertex_stream_.reset();
@@ -138,6 +141,19 @@ void ShadowDrawer::add_entity(const classic::FrameView& view, const nqr_entity& 
     }
 }
 
+// A stencil-only clear of a packed depth-stencil buffer rewrites every depth texel around it;
+// instead each frame marks with values of its own (kKinds of them) and the buffer is cleared
+// only when they run out (every 85 frames) or the framebuffer changes. True: clear now.
+bool ShadowDrawer::next_stencil_values() {
+    GLint framebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    stencil_base_ += kKinds;
+    if (stencil_base_ + kKinds <= 255 && framebuffer == stencil_framebuffer_) return false;
+    stencil_base_ = 0;
+    stencil_framebuffer_ = framebuffer;
+    return true;
+}
+
 void ShadowDrawer::draw(const ShadowSettings& settings) {
     if (!program_ || vertices_.empty()) return;
     // What one push cannot hold is left out (a million shadow vertices in one frame).
@@ -155,7 +171,7 @@ void ShadowDrawer::draw(const ShadowSettings& settings) {
     glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(Vertex), at(offsetof(Vertex, clip)));
     glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, sizeof(Vertex), at(offsetof(Vertex, alpha)));
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    begin_shadow_state();
+    begin_shadow_state(next_stencil_values());
     for (int kind = 0; kind < kKinds; ++kind) {
         const std::vector<uint32_t>& indices = indices_[kind];
         const size_t count =
@@ -164,7 +180,7 @@ void ShadowDrawer::draw(const ShadowSettings& settings) {
         const size_t index_offset = index_stream_.push(indices.data(), count * sizeof(uint32_t), 4);
         if (index_offset == gl::StreamBuffer::kNoSpace) continue;
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_stream_.id());
-        glStencilFunc(GL_NOTEQUAL, kind + 1, 0xFF);
+        glStencilFunc(GL_NOTEQUAL, stencil_base_ + kind + 1, 0xFF);
         glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(index_offset));
     }

@@ -9,8 +9,9 @@
 //     offset so the shadow neither z-fights its floor nor visibly floats above it.
 //   - A flattened model overlaps itself (front and back faces, folded limbs): the stencil keeps
 //     each pass kind from darkening a pixel twice. Shadows of different casters merge the same
-//     way, as two shadows of one light do; the umbra and penumbra kinds still stack. The
-//     stencil is cleared once per frame, before the first kind.
+//     way, as two shadows of one light do; the umbra and penumbra kinds still stack. Each
+//     frame marks the stencil with reference values of its own, so it is cleared only every
+//     85 frames (or when the framebuffer changes); nothing else may write the stencil.
 //   - Only colour attachment 0 is written (normals in a G-buffer stay the floor's).
 // The framebuffer needs a stencil buffer; without one overlapping triangles darken twice.
 #pragma once
@@ -60,6 +61,7 @@ class ShadowDrawer {
         float alpha;
     };
     static constexpr int kKinds = 3;  // the umbra (or hard shadow) and two penumbrae
+    bool next_stencil_values();
 
     gl::Program program_;
     gl::StreamBuffer vertex_stream_, index_stream_;
@@ -69,6 +71,9 @@ class ShadowDrawer {
     std::vector<Vertex> vertices_;
     std::array<std::vector<uint32_t>, kKinds> indices_;
     std::vector<uint32_t> lit_;  // scratch: one caster's light-facing triangles
+    // This frame's stencil values are stencil_base_ + 1 ... + kKinds, in stencil_framebuffer_.
+    int stencil_base_ = 0;
+    GLint stencil_framebuffer_ = -1;
 };
 
 }  // namespace nq::npr::technical

@@ -41,6 +41,7 @@ float fullbright_share(const nqr_alias_model& model) {
 void TechnicalModels::add_alias(const nqr_model& model, TechnicalModel& out) {
     const std::string name = model.name ? model.name : "?";
     out.casts_shadow = fullbright_share(*model.alias) < kLightSkinShare;
+    out.skin_tones.build(*model.alias);
     std::string error;
     out.alias_edges = AliasEdgeMesh::create(*model.alias, error);
     if (!out.alias_edges) {

@@ -14,11 +14,13 @@
 #include "nqr_renderer.h"
 #include "technical/alias_edge_mesh.h"
 #include "technical/brush_edge_mesh.h"
+#include "technical/skin_tones.h"
 
 namespace nq::npr::technical {
 
 struct TechnicalModel {
     std::unique_ptr<AliasEdgeMesh> alias_edges;  // alias models
+    SkinTones skin_tones;                        // alias models
     const BrushEdgeMesh* brush_edges = nullptr;  // brush models (shared)
     uint32_t first_surface = 0, num_surfaces = 0;
     float radius = 0;  // bounding radius about the model origin (nqr_model.radius)

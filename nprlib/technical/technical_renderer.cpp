@@ -160,6 +160,7 @@ bool TechnicalRenderer::find_alias(const nqr_entity* entity, AliasItem& out) con
     if (!out.image) return false;
     const TechnicalModel* model = models_.find(entity->model);
     out.edges = model ? model->alias_edges.get() : nullptr;
+    out.tones = model ? &model->skin_tones : nullptr;
     out.radius = model ? model->radius * std::max(entity->scale, 1.0f) : 0.0f;
     out.casts_shadow = !model || model->casts_shadow;
     return true;
@@ -202,7 +203,8 @@ void TechnicalRenderer::gather_alias_entities(const nqr_frame& frame,
                                               const classic::FrameView& view) {
     items_.clear();
     shadows_.begin_frame();
-    alias_edges_.begin_frame();
+    alias_edges_.begin_frame(view, settings.shading,
+                             chain_tolerance(edge_frame_uniforms(frame), settings.edges));
     for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
         AliasItem item;
         if (!find_alias(frame.alias_entities[i], item)) continue;
@@ -215,6 +217,7 @@ void TechnicalRenderer::gather_alias_entities(const nqr_frame& frame,
             item.skin =
                 classic_.alias_drawer().skin_texture(frame, *item.entity, *item.gpu, *item.image);
             item.fullbright = item.image->fullbright ? item.image->fullbright.id() : 0;
+            item.skin_sample = skin_sample(item);
         }
         if ((shadow.count > 0 || edges) && item.edges) {
             pose_.resize(std::max<size_t>(pose_.size(), item.edges->vertex_count()));
@@ -223,13 +226,22 @@ void TechnicalRenderer::gather_alias_entities(const nqr_frame& frame,
                 shadows_.add_entity(view, *item.entity, *item.edges, pose_.data(), shadow);
             }
             if (edges) {
-                item.edge_span = alias_edges_.add_entity(*item.entity, *item.gpu, item.skin,
-                                                         *item.edges, pose_.data(), settings.edges);
+                item.edge_span =
+                    alias_edges_.add_entity(*item.entity, *item.gpu, *item.edges, pose_.data(),
+                                            item.skin_sample, settings.edges);
             }
         }
         if (on_screen) items_.push_back(item);
     }
-    alias_edges_.upload(view, settings.shading);
+    alias_edges_.upload();
+}
+
+SkinSample TechnicalRenderer::skin_sample(const AliasItem& item) const {
+    const nqr_entity& entity = *item.entity;
+    const uint8_t* pixels = item.gpu->skin_pixels(entity.skin, entity.skin_image);
+    if (item.tones)
+        return item.tones->sample(item.gpu->model(), pixels, entity, classic_.palette());
+    return sample_skin(item.gpu->model(), pixels, entity, classic_.palette());
 }
 
 // Shadows fade out over the last quarter of tech_shadow_distance instead of popping away.
@@ -269,7 +281,8 @@ void TechnicalRenderer::draw_faces(const classic::FrameView& view, AliasPass pas
         if (!in_pass(*item.entity, static_cast<int>(pass))) continue;
         if (!begun) faces_.begin(view, settings.shading);
         begun = true;
-        faces_.draw(view, *item.entity, *item.gpu, item.skin, item.fullbright);
+        faces_.draw(view, *item.entity, *item.gpu, item.skin, item.fullbright,
+                    item.skin_sample.average);
     }
     if (begun) faces_.end();
 }

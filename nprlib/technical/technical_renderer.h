@@ -59,6 +59,8 @@ class TechnicalRenderer {
         const classic::AliasModelGpu* gpu = nullptr;
         const classic::SkinImageGpu* image = nullptr;
         const AliasEdgeMesh* edges = nullptr;
+        const SkinTones* tones = nullptr;
+        SkinSample skin_sample;  // on screen only
         float radius = 0;
         bool casts_shadow = true;
         GLuint skin = 0, fullbright = 0;
@@ -71,6 +73,7 @@ class TechnicalRenderer {
     void pass_end() const;
     bool find_alias(const nqr_entity* entity, AliasItem& out) const;
     void gather_alias_entities(const nqr_frame& frame, const classic::FrameView& view);
+    SkinSample skin_sample(const AliasItem& item) const;
     ShadowPasses shadow_passes(const AliasItem& item, const classic::FrameView& view) const;
     void draw_faces(const classic::FrameView& view, AliasPass pass);
     void draw_alias_edges(const EdgeFrameUniforms& uniforms, AliasPass pass);

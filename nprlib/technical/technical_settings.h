@@ -37,6 +37,7 @@ struct EdgeSettings {
     bool distance_fade = true;
     float fade_distance = 1600.0f;  // blend threshold: edges take the model colour from here on
     float depth_offset = 0.002f;    // edges pulled toward the eye by this share of their depth
+    float merge_pixels = 0.5f;      // alias edge chains: straight within this many pixels -> one
     BackfaceLines backface_lines = BackfaceLines::unclean_models;
     float backface_width = 3.0f;  // pixels, like the widths above
     bool world_edges = true;      // silhouettes and creases of brush geometry (BSP shared edges)

@@ -16,6 +16,7 @@
 #include "technical/alias_edge_drawer.h"
 #include "technical/alias_edge_mesh.h"
 #include "technical/alias_pose.h"
+#include "technical/skin_tones.h"
 #include "technical/technical_settings.h"
 
 namespace nq::npr::test {
@@ -299,13 +300,18 @@ class TechnicalEdgesTest : public GlSuiteTest<TechnicalEdgesTest> {
         }
         for (const Drawn& item : items) {
             if (!item.edges) continue;
-            const GLuint skin = item.model->faces->skin_image(0, 0)->base.id();
             edges_.draw_entity(view, uniforms, *item.entity, *item.model->faces, *item.model->edges,
-                               skin, settings);
+                               skin_of(*item.model->faces, *item.entity), settings);
         }
         classic::end_classic_pass();
         EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
         return {gl_->pixels()};
+    }
+
+    technical::SkinSample skin_of(const classic::AliasModelGpu& faces,
+                                  const nqr_entity& entity) const {
+        return technical::sample_skin(faces.model(), faces.skin_pixels(0, 0), entity,
+                                      engine_.palette.data());
     }
 
     static void place_eye(nqr_entity& entity, const nqr_camera& camera) {
@@ -483,7 +489,7 @@ TEST_F(TechnicalEdgesTest, DrawingLeavesTheDocumentedGlState) {
     place_eye(entity, camera);
     classic::FrameView view;
     ASSERT_TRUE(classic::read_frame_view(frame_.build(camera, 0), view));
-    const GLuint skin = cube.faces->skin_image(0, 0)->base.id();
+    const technical::SkinSample skin = skin_of(*cube.faces, entity);
     TechnicalSettings settings = plain_settings();
     for (BackfaceLines policy : {BackfaceLines::never, BackfaceLines::always}) {
         settings.edges.backface_lines = policy;

@@ -12,6 +12,8 @@
 #include "classic/frame_view.h"
 #include "nprlib_test_support.h"
 #include "technical/alias_face_drawer.h"
+#include "technical/shading_model.h"
+#include "technical/skin_tones.h"
 #include "technical/technical_settings.h"
 
 namespace nq::npr::test {
@@ -170,8 +172,11 @@ class TechnicalShadingTest : public GlSuiteTest<TechnicalShadingTest> {
         const classic::SkinImageGpu* image = gpu_->skin_image(0, 0);
         ASSERT_NE(image, nullptr);
         classic::begin_classic_pass();
+        const glm::vec3 kd =
+            technical::sample_skin(gpu_->model(), gpu_->skin_pixels(0, 0), entity_, palette_.data())
+                .average;
         drawer_.draw_entity(view, entity_, *gpu_, image->base.id(),
-                            image->fullbright ? image->fullbright.id() : 0, settings);
+                            image->fullbright ? image->fullbright.id() : 0, kd, settings);
         EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     }
 
@@ -394,6 +399,123 @@ TEST_F(TechnicalShadingTest, WritesViewSpaceNormalsToLocationOne) {
     glDeleteTextures(1, &normals);
     // The pole faces the eye: view-space normal (0, 0, 1), stored as n * 0.5 + 0.5.
     EXPECT_TRUE(near(encoded, Rgb{128, 128, 255}, 3)) << encoded;
+}
+
+}  // namespace
+}  // namespace nq::npr::test
+
+namespace nq::npr::test {
+namespace {
+
+// ------------------------------------------------------------------ the CPU twin (edge ends)
+
+// technical::technical_shade on the CPU gives what the faces show per pixel, mode by mode.
+TEST_F(TechnicalShadingTest, CpuTonesMatchThePixelsOfTheFaces) {
+    upload_sphere(kGrey);
+    entity_.light.size = sizeof(nqr_entity_light);
+    entity_.light.ambient = 0.4f;
+    entity_.light.directional = 0.5f;
+    std::fill_n(entity_.light.color, 3, 1.0f);
+    const glm::vec3 kd = palette_rgb(kGrey);
+    for (const ShadingMode mode :
+         {ShadingMode::classic, ShadingMode::gooch, ShadingMode::metal, ShadingMode::object_id}) {
+        for (const bool splashback : {false, true}) {
+            ShadingSettings s;
+            s.mode = mode;
+            s.splashback = splashback;
+            s.metal_bands = 0.0f;  // the pole pixel is not exactly at height 0
+            for (const float n_dot_l : {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f}) {
+                const Rgb drawn = pole_lit_at(n_dot_l, s);
+                // The pole: normal -X, height 0.
+                const glm::vec3 cpu = technical::technical_shade(s, technical::tone_light(entity_),
+                                                                 kd, {-1.0f, 0.0f, 0.0f}, 0.0f);
+                EXPECT_COLOUR(drawn, to_rgb(cpu))
+                    << "mode " << static_cast<int>(mode) << " splash-back " << splashback << " n.l "
+                    << n_dot_l;
+            }
+        }
+    }
+}
+
+TEST(TechnicalShadingModel, GoochOnTheCpuIsTheFormula) {
+    technical::ToneLight light;
+    light.direction = {0.0f, 0.0f, 1.0f};
+    const glm::vec3 kd(0.2f, 0.5f, 0.7f);
+    for (const bool splashback : {false, true}) {
+        const ShadingSettings s = gooch_settings(splashback);
+        for (const float c : {-1.0f, -0.3f, 0.0f, 0.6f, 1.0f}) {
+            const glm::vec3 n(std::sqrt(1.0f - c * c), 0.0f, c);
+            const glm::vec3 cpu = technical::technical_shade(s, light, kd, n, 0.0f);
+            const glm::vec3 expected = gooch(kd, c, s);
+            EXPECT_NEAR(glm::distance(cpu, expected), 0.0f, 1e-5f) << "n.l " << c;
+        }
+    }
+}
+
+// ------------------------------------------------------------------ k_d on the CPU
+
+class SkinTonesTest : public ::testing::Test {
+  protected:
+    const nqr_alias_model& model_with_skin(std::vector<uint8_t> skin, uint32_t flags = 0) {
+        make_sphere(builder_, {2, 4});
+        builder_.skin = std::move(skin);
+        builder_.flags = flags;
+        return *builder_.build();
+    }
+    static glm::vec3 mean_of(std::initializer_list<glm::vec3> colours) {
+        glm::vec3 sum(0.0f);
+        for (const glm::vec3& c : colours) sum += c;
+        return sum / static_cast<float>(colours.size());
+    }
+    AliasBuilder builder_;
+    std::array<uint8_t, 768> palette_ = make_test_palette();
+};
+
+TEST_F(SkinTonesTest, AverageIsTheMeanOfTheLitSkin) {
+    // Four quarters: red, blue, grey and a fullbright colour, which the lit skin holds as black.
+    const nqr_alias_model& model = model_with_skin(make_image(8, 8, [](int x, int y) {
+        if (y < 4) return x < 4 ? colour::kRed : colour::kBlue;
+        return x < 4 ? kGrey : uint8_t{240};
+    }));
+    nqr_entity entity{};
+    technical::SkinTones tones;
+    tones.build(model);
+    const technical::SkinSample sample =
+        tones.sample(model, model.skins[0].images[0], entity, palette_.data());
+    const glm::vec3 expected = mean_of({palette_rgb(colour::kRed), palette_rgb(colour::kBlue),
+                                        palette_rgb(kGrey), glm::vec3(0.0f)});
+    EXPECT_NEAR(glm::distance(sample.average, expected), 0.0f, 1e-5f);
+    // The one-off form counts the same.
+    const technical::SkinSample once =
+        technical::sample_skin(model, model.skins[0].images[0], entity, palette_.data());
+    EXPECT_NEAR(glm::distance(once.average, expected), 0.0f, 1e-5f);
+}
+
+TEST_F(SkinTonesTest, PlayerColoursTranslateTheAverageAndTheTexels) {
+    // Half shirt-range pixels (index 16 + 3), half grey; shirt colour 4 moves them to 4 * 16 + 3.
+    const nqr_alias_model& model = model_with_skin(make_image(
+        8, 8, [](int x, int) { return x < 4 ? uint8_t{colour::kShirtBase + 3} : kGrey; }));
+    nqr_entity entity{};
+    entity.has_translation = 1;
+    entity.top_color = 4;
+    technical::SkinTones tones;
+    tones.build(model);
+    const technical::SkinSample sample =
+        tones.sample(model, model.skins[0].images[0], entity, palette_.data());
+    const glm::vec3 shirt = palette_rgb(4 * 16 + 3);
+    EXPECT_NEAR(glm::distance(sample.average, mean_of({shirt, palette_rgb(kGrey)})), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::distance(sample.kd(1, 1, 1.0f), shirt), 0.0f, 1e-5f);  // texel (1, 1)
+    EXPECT_NEAR(glm::distance(sample.kd(1, 1, 0.0f), sample.average), 0.0f, 1e-6f);
+}
+
+TEST_F(SkinTonesTest, HoleyModelsLeaveTheirTransparentIndexOut) {
+    const nqr_alias_model& model = model_with_skin(
+        make_image(8, 8, [](int x, int) { return x < 4 ? uint8_t{255} : colour::kRed; }),
+        classic::kAliasFlagHoley);
+    nqr_entity entity{};
+    const technical::SkinSample sample =
+        technical::sample_skin(model, model.skins[0].images[0], entity, palette_.data());
+    EXPECT_NEAR(glm::distance(sample.average, palette_rgb(colour::kRed)), 0.0f, 1e-5f);
 }
 
 }  // namespace
