@@ -35,6 +35,13 @@ struct Scene {
         representative.push_back(static_cast<uint32_t>(representative.size()));
         return static_cast<uint32_t>(view.size() - 1);
     }
+    // steps + 1 points `spacing` apart along x, the odd ones raised by `amplitude`.
+    std::vector<uint32_t> zigzag(int steps, float spacing, float amplitude = 0.0f) {
+        std::vector<uint32_t> points;
+        for (int i = 0; i <= steps; ++i)
+            points.push_back(point(spacing * i, i % 2 ? amplitude : 0.0f));
+        return points;
+    }
     // A polyline through the points, one edge per step.
     void polyline(const std::vector<uint32_t>& points, EdgeKind kind = EdgeKind::silhouette) {
         for (size_t i = 0; i + 1 < points.size(); ++i) {
@@ -67,8 +74,7 @@ void expect_covered(const Scene& scene, const std::vector<uint32_t>& vertices, f
 
 TEST(EdgeChains, AStraightChainBecomesOneEdgeBetweenItsEnds) {
     Scene s;
-    std::vector<uint32_t> line;
-    for (int i = 0; i <= 10; ++i) line.push_back(s.point(3.0f * i, 0.0f));
+    const std::vector<uint32_t> line = s.zigzag(10, 3.0f);
     s.polyline(line);
     s.simplify();
     ASSERT_EQ(s.edges.size(), 1u);
@@ -80,8 +86,7 @@ TEST(EdgeChains, AStraightChainBecomesOneEdgeBetweenItsEnds) {
 TEST(EdgeChains, BendsOfMoreThanTheToleranceStay) {
     // A zigzag of 2-unit (2-pixel) amplitude: no run is straight within half a pixel.
     Scene s;
-    std::vector<uint32_t> zigzag;
-    for (int i = 0; i <= 8; ++i) zigzag.push_back(s.point(4.0f * i, i % 2 ? 2.0f : 0.0f));
+    const std::vector<uint32_t> zigzag = s.zigzag(8, 4.0f, 2.0f);
     s.polyline(zigzag);
     s.simplify();
     EXPECT_EQ(s.edges.size(), 8u);
@@ -90,8 +95,7 @@ TEST(EdgeChains, BendsOfMoreThanTheToleranceStay) {
 TEST(EdgeChains, SmallWobblesAreMergedWithinTheTolerance) {
     // A 0.3-pixel wobble: merged, and every vertex stays within half a pixel of the result.
     Scene s;
-    std::vector<uint32_t> wobble;
-    for (int i = 0; i <= 12; ++i) wobble.push_back(s.point(2.0f * i, i % 2 ? 0.3f : 0.0f));
+    const std::vector<uint32_t> wobble = s.zigzag(12, 2.0f, 0.3f);
     s.polyline(wobble);
     s.simplify();
     EXPECT_LT(s.edges.size(), 3u);
@@ -101,8 +105,7 @@ TEST(EdgeChains, SmallWobblesAreMergedWithinTheTolerance) {
 TEST(EdgeChains, ToleranceScalesWithDepth) {
     // The same 2-unit zigzag ten times as far away is a fifth of a pixel: one edge.
     Scene s;
-    std::vector<uint32_t> zigzag;
-    for (int i = 0; i <= 8; ++i) zigzag.push_back(s.point(4.0f * i, i % 2 ? 2.0f : 0.0f));
+    const std::vector<uint32_t> zigzag = s.zigzag(8, 4.0f, 2.0f);
     for (glm::vec3& p : s.view) p.z *= 10.0f;
     s.polyline(zigzag);
     s.simplify();
@@ -125,8 +128,7 @@ TEST(EdgeChains, ChainsEndWhereThreeEdgesMeet) {
 
 TEST(EdgeChains, KindsAreNeverJoined) {
     Scene s;
-    std::vector<uint32_t> line;
-    for (int i = 0; i <= 6; ++i) line.push_back(s.point(3.0f * i, 0.0f));
+    const std::vector<uint32_t> line = s.zigzag(6, 3.0f);
     s.polyline({line[0], line[1], line[2], line[3]}, EdgeKind::ridge);
     s.polyline({line[3], line[4], line[5], line[6]}, EdgeKind::silhouette);
     s.simplify();
@@ -170,8 +172,7 @@ TEST(EdgeChains, ClosedLoopsKeepTheirCorners) {
 
 TEST(EdgeChains, NothingIsMergedWithoutATolerance) {
     Scene s;
-    std::vector<uint32_t> line;
-    for (int i = 0; i <= 5; ++i) line.push_back(s.point(3.0f * i, 0.0f));
+    const std::vector<uint32_t> line = s.zigzag(5, 3.0f);
     s.polyline(line);
     s.simplify({0.0f, 1.0f / kDepth});
     EXPECT_EQ(s.edges.size(), 5u);
@@ -179,8 +180,7 @@ TEST(EdgeChains, NothingIsMergedWithoutATolerance) {
 
 TEST(EdgeChains, VerticesAtOrBehindTheEyeAreKept) {
     Scene s;
-    std::vector<uint32_t> line;
-    for (int i = 0; i <= 4; ++i) line.push_back(s.point(3.0f * i, 0.0f));
+    const std::vector<uint32_t> line = s.zigzag(4, 3.0f);
     s.view[line[2]].z = 1.0f;  // behind the eye (GL view space looks down -z)
     s.polyline(line);
     s.simplify();
