@@ -8,7 +8,9 @@ namespace nq {
 
 namespace {
 
-glm::vec3 to_glm(const Vec3& v) { return {v[0], v[1], v[2]}; }
+glm::vec3 to_glm(const Vec3& v) {
+    return {v[0], v[1], v[2]};
+}
 
 // Quake keeps the weapon and the player bright enough to be seen in the dark.
 float minimum_light(const VisibleEntity& v, int view_entity) {
@@ -20,8 +22,11 @@ float minimum_light(const VisibleEntity& v, int view_entity) {
 }  // namespace
 
 SceneBuilder::SceneBuilder()
-    : entities_(kMaxEntities), particles_(kMaxParticles), dlights_(kMaxDlights),
-      visible_(kMaxEntities), smoothed_(kSmootherSlots) {
+    : entities_(kMaxEntities),
+      particles_(kMaxParticles),
+      dlights_(kMaxDlights),
+      visible_(kMaxEntities),
+      smoothed_(kSmootherSlots) {
     for (auto& list : by_kind_) list.reserve(kMaxEntities);
     frame_.size = sizeof(nqr_frame);
     lightstyles_.fill(1.0f);
@@ -67,8 +72,8 @@ const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
     frame_.num_dlights = static_cast<uint32_t>(
         export_dynamic_lights(client.dynamic_lights(), client.time(), dlights_));
     frame_.dlights = dlights_.data();
-    frame_.num_particles = static_cast<uint32_t>(
-        export_particles(client.particles().particles(), particles_));
+    frame_.num_particles =
+        static_cast<uint32_t>(export_particles(client.particles().particles(), particles_));
     frame_.particles = particles_.data();
 
     frame_.world = level.model_id(1);
@@ -98,6 +103,19 @@ void SceneBuilder::set_view_frustum() {
     }
 }
 
+// The radius sphere holds every pose at any angle; an alias model's two poses of this frame,
+// placed, are often far smaller (a monster's sphere reaches into the view while the monster is
+// off screen: every frame its faces, edges and shadows would be worked out for nothing).
+bool SceneBuilder::pose_outside_view(const RenderModel& model, const nqr_entity& e) const {
+    const AliasModelData* alias = model.alias_data();
+    if (!alias) return false;
+    const AliasModelData::PoseBounds a = alias->pose_bounds(e.pose0);
+    const AliasModelData::PoseBounds b = alias->pose_bounds(e.pose1);
+    // Blending moves each vertex between its places in the two poses: inside both boxes' union.
+    return frustum_.placed_box_outside(load_matrix(e.model_matrix), glm::min(a.mins, b.mins),
+                                       glm::max(a.maxs, b.maxs));
+}
+
 void SceneBuilder::add_entity(Level& level, const ClientState& client, const VisibleEntity& v) {
     ++counts_.entities_considered;
     nqr_model_id id = level.model_id(v.model);
@@ -119,12 +137,12 @@ void SceneBuilder::add_entity(Level& level, const ClientState& client, const Vis
     if (entity_count_ == entities_.size()) return;
     nqr_entity& e = entities_[entity_count_++];
     export_entity(v, id, e);
+    fill_entity_transform(kind, frame_.camera, e);
     // Kept, flagged: a plugin may still want it for what reaches into the view (shadows).
-    if (!view_model && frustum_.sphere_outside(origin, radius)) {
+    if (!view_model && (frustum_.sphere_outside(origin, radius) || pose_outside_view(*model, e))) {
         e.flags |= NQR_ENTITY_OUTSIDE_VIEW;
         ++counts_.entities_outside_view;
     }
-    fill_entity_transform(kind, frame_.camera, e);
     if (const LightSampler* sampler = level.light_sampler()) {
         EntityLightQuery query;
         query.origin = to_glm(v.origin);

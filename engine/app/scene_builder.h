@@ -26,7 +26,7 @@ struct SceneCounts {
 };
 
 class SceneBuilder {
-public:
+  public:
     static constexpr size_t kMaxEntities = 4096;
     static constexpr size_t kMaxParticles = 16384;
     static constexpr size_t kMaxDlights = 64;
@@ -51,10 +51,11 @@ public:
     const SceneCounts& counts() const { return counts_; }
     VisibleEntityList& visible_entities() { return visible_; }
 
-private:
+  private:
     void reset_lists();
     void set_view_frustum();  // frustum_ and frame_.view_planes from the camera
     void add_entity(Level& level, const ClientState& client, const VisibleEntity& v);
+    bool pose_outside_view(const RenderModel& model, const nqr_entity& e) const;
     void link_lists();
 
     nqr_frame frame_{};

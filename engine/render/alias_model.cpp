@@ -84,17 +84,30 @@ void AliasModelData::convert_skins() {
 
 void AliasModelData::compute_bounds() {
     const MdlHeader& h = mdl_.header;
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (const nqr_alias_vertex& v : poses_) {
-        glm::vec3 p;
-        for (int i = 0; i < 3; ++i) p[i] = h.scale[i] * v.v[i] + h.scale_origin[i];
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-        radius_ = std::max(radius_, glm::length(p));
+    const size_t per_pose = std::max<size_t>(mdl_.tex_coords.size(), 1);
+    constexpr glm::vec3 kEmptyMin(std::numeric_limits<float>::max());
+    constexpr glm::vec3 kEmptyMax(std::numeric_limits<float>::lowest());
+    PoseBounds all{kEmptyMin, kEmptyMax};
+    for (size_t first = 0; first < poses_.size(); first += per_pose) {
+        PoseBounds pose{kEmptyMin, kEmptyMax};
+        for (size_t i = first; i < std::min(first + per_pose, poses_.size()); ++i) {
+            glm::vec3 p;
+            for (int k = 0; k < 3; ++k) p[k] = h.scale[k] * poses_[i].v[k] + h.scale_origin[k];
+            pose.mins = glm::min(pose.mins, p);
+            pose.maxs = glm::max(pose.maxs, p);
+            radius_ = std::max(radius_, glm::length(p));
+        }
+        pose_bounds_.push_back(pose);
+        all.mins = glm::min(all.mins, pose.mins);
+        all.maxs = glm::max(all.maxs, pose.maxs);
     }
-    if (poses_.empty()) lo = hi = glm::vec3(0.0f);
-    mins_ = lo;
-    maxs_ = hi;
+    if (poses_.empty()) all = PoseBounds{};
+    mins_ = all.mins;
+    maxs_ = all.maxs;
+}
+
+AliasModelData::PoseBounds AliasModelData::pose_bounds(uint32_t pose) const {
+    return pose < pose_bounds_.size() ? pose_bounds_[pose] : PoseBounds{mins_, maxs_};
 }
 
 void AliasModelData::link_abi() {

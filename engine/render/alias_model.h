@@ -31,6 +31,12 @@ class AliasModelData {
     const glm::vec3& mins() const { return mins_; }
     const glm::vec3& maxs() const { return maxs_; }
     float radius() const { return radius_; }
+    // Bounds of one pose's decoded vertices in model space (poses numbered as in the ABI's
+    // nqr_alias_frame::first_pose); the whole model's for a pose that does not exist.
+    struct PoseBounds {
+        glm::vec3 mins{0.0f}, maxs{0.0f};
+    };
+    PoseBounds pose_bounds(uint32_t pose) const;
 
   private:
     AliasModelData() = default;
@@ -49,6 +55,7 @@ class AliasModelData {
     std::vector<std::vector<const uint8_t*>> skin_images_;
     std::vector<std::vector<float>> skin_intervals_;
     std::vector<nqr_alias_skin> skins_;
+    std::vector<PoseBounds> pose_bounds_;
     glm::vec3 mins_{0.0f}, maxs_{0.0f};
     float radius_ = 0.0f;
     nqr_alias_model alias_{};

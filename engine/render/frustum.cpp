@@ -1,5 +1,7 @@
 #include "render/frustum.h"
 
+#include <cmath>
+
 namespace nq {
 
 namespace {
@@ -45,6 +47,22 @@ bool Frustum::box_outside(const glm::vec3& mins, const glm::vec3& maxs) const {
 bool Frustum::sphere_outside(const glm::vec3& centre, float radius) const {
     for (uint32_t i = 0; i < num_planes; ++i) {
         if (glm::dot(planes[i].normal, centre) - planes[i].dist < -radius) return true;
+    }
+    return false;
+}
+
+bool Frustum::placed_box_outside(const glm::mat4& object_to_world, const glm::vec3& mins,
+                                 const glm::vec3& maxs) const {
+    const glm::vec3 centre(object_to_world * glm::vec4((mins + maxs) * 0.5f, 1.0f));
+    const glm::vec3 half = (maxs - mins) * 0.5f;
+    for (uint32_t i = 0; i < num_planes; ++i) {
+        const FrustumPlane& p = planes[i];
+        // How far the box reaches along the normal from its centre: its half axes, placed.
+        float reach = 0.0f;
+        for (int axis = 0; axis < 3; ++axis) {
+            reach += half[axis] * std::abs(glm::dot(p.normal, glm::vec3(object_to_world[axis])));
+        }
+        if (glm::dot(p.normal, centre) - p.dist < -reach) return true;
     }
     return false;
 }

@@ -30,6 +30,11 @@ struct Frustum {
     bool box_outside(const glm::vec3& mins, const glm::vec3& maxs) const;
     // True when the sphere lies wholly outside one plane (conservative, as box_outside).
     bool sphere_outside(const glm::vec3& centre, float radius) const;
+    // True when the box [mins, maxs] of an object's own space, placed in the world by the affine
+    // `object_to_world` (rotation, scale, translation), lies wholly outside one plane
+    // (conservative, as box_outside).
+    bool placed_box_outside(const glm::mat4& object_to_world, const glm::vec3& mins,
+                            const glm::vec3& maxs) const;
 };
 
 }  // namespace nq

@@ -169,7 +169,7 @@ void AliasEdgeDrawer::begin_frame(const classic::FrameView& view, const ShadingS
 void AliasEdgeDrawer::new_entity_stamp(uint32_t vertex_count) {
     if (end_views_.size() < vertex_count) {
         end_views_.resize(vertex_count);
-        end_colours_.resize(vertex_count);
+        shaded_ends_.resize(vertex_count);
         view_stamps_.resize(vertex_count, 0);
         colour_stamps_.resize(vertex_count, 0);
     }
@@ -212,26 +212,31 @@ void AliasEdgeDrawer::place_ends(const EndShader& shader) {
     }
 }
 
+// The corners of the first `count` edges, written in place: two per end, each end's distance
+// and colour worked out once however many edges meet there.
 void AliasEdgeDrawer::append_quads(const EndShader& shader, size_t count) {
-    const auto colour = [&](uint32_t v) -> const std::array<uint8_t, 3>& {
-        if (colour_stamps_[v] != stamp_) {
-            end_colours_[v] = shader.colour(v);
-            colour_stamps_[v] = stamp_;
-        }
-        return end_colours_[v];
+    const auto shade_end = [&](uint32_t v) {
+        if (colour_stamps_[v] == stamp_) return;
+        const std::array<uint8_t, 3> c = shader.colour(v);
+        // The view transform is rigid: the distance from the eye is the view-space length.
+        shaded_ends_[v] = {{c[0], c[1], c[2]}, glm::length(end_views_[v])};
+        colour_stamps_[v] = stamp_;
     };
+    const size_t first = corners_.size();
+    corners_.resize(first + 4 * count);
+    Corner* out = corners_.data() + first;
     for (size_t i = 0; i < count; ++i) {
         const FoundEdge& e = found_[i];
+        shade_end(e.v0);
+        shade_end(e.v1);
         const uint8_t kind = static_cast<uint8_t>(static_cast<uint32_t>(e.kind) << 1);
         const auto corner = [&](uint32_t own, uint32_t other, uint8_t side) {
-            const std::array<uint8_t, 3>& c = colour(own);
-            const glm::vec3& view = end_views_[own];
-            // The view transform is rigid: the distance from the eye is the view-space length.
-            corners_.push_back({view,
-                                glm::length(view),
-                                end_views_[other],
-                                {c[0], c[1], c[2]},
-                                static_cast<uint8_t>(kind | side)});
+            const ShadedEnd& end = shaded_ends_[own];
+            *out++ = {end_views_[own],
+                      end.distance,
+                      end_views_[other],
+                      {end.rgb[0], end.rgb[1], end.rgb[2]},
+                      static_cast<uint8_t>(kind | side)};
         };
         corner(e.v0, e.v1, 0);
         corner(e.v0, e.v1, 1);

@@ -101,11 +101,16 @@ class AliasEdgeDrawer {
     ChainTolerance chain_tolerance_;
     EdgeChains chains_;
     std::vector<Corner> corners_;
-    // Scratch for one entity: its edges; by MDL vertex, the view-space positions and shaded
-    // colours of edge ends, valid where the stamps equal stamp_ (a new stamp per entity).
+    // Scratch for one entity: its edges; by MDL vertex, the view-space positions, and the
+    // shaded colours and distances, of edge ends, valid where the stamps equal stamp_ (a new
+    // stamp per entity).
+    struct ShadedEnd {
+        uint8_t rgb[3];
+        float distance;  // from the eye
+    };
     std::vector<FoundEdge> found_;
     std::vector<glm::vec3> end_views_;
-    std::vector<std::array<uint8_t, 3>> end_colours_;
+    std::vector<ShadedEnd> shaded_ends_;
     std::vector<uint32_t> view_stamps_, colour_stamps_;
     uint32_t stamp_ = 0;
     std::vector<glm::vec3> pose_;  // scratch: the convenience draw_entity's pose

@@ -67,6 +67,7 @@ class DemoReplay {
 
     const ClientState& client() const { return client_; }
     const Level& level() const { return level_; }
+    Level& level() { return level_; }
     const ViewResult& view() const { return view_; }
     uint64_t frames() const { return player_->frames(); }
 

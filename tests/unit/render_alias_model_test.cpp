@@ -131,6 +131,39 @@ TEST(RenderAliasModel, BoundsEncloseEveryPoseTightly) {
     }
 }
 
+// Each pose's box from its own vertices through the ABI's poses; a pose past the last gets the
+// whole model's box (a malformed entity frame must never cull a model that is on screen).
+TEST(RenderAliasModel, EachPoseHasItsOwnTightBounds) {
+    size_t smaller_than_model = 0, poses_seen = 0;
+    for (const std::string& path : progs_with("mdl")) {
+        const auto data = load_alias(path);
+        const nqr_alias_model& a = data->abi();
+        for (uint32_t pose = 0; pose < a.num_poses; ++pose) {
+            glm::vec3 lo(1e9f), hi(-1e9f);
+            for (uint32_t v = 0; v < a.num_vertices; ++v) {
+                const glm::vec3 p = decoded(a, a.poses[size_t(pose) * a.num_vertices + v]);
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+            const AliasModelData::PoseBounds b = data->pose_bounds(pose);
+            for (int c = 0; c < 3; ++c) {
+                ASSERT_FLOAT_EQ(b.mins[c], lo[c]) << path << " pose " << pose;
+                ASSERT_FLOAT_EQ(b.maxs[c], hi[c]) << path << " pose " << pose;
+            }
+            ++poses_seen;
+            if (glm::any(glm::greaterThan(b.mins, data->mins())) ||
+                glm::any(glm::lessThan(b.maxs, data->maxs()))) {
+                ++smaller_than_model;
+            }
+        }
+        const AliasModelData::PoseBounds past = data->pose_bounds(a.num_poses);
+        EXPECT_EQ(past.mins, data->mins()) << path;
+        EXPECT_EQ(past.maxs, data->maxs()) << path;
+    }
+    // Animated models move their limbs: most poses fill less than the model's box.
+    EXPECT_GT(smaller_than_model, poses_seen / 2);
+}
+
 TEST(RenderSpriteModel, EverySpriteKeepsPicturesAndFrames) {
     const auto paths = progs_with("spr");
     ASSERT_GE(paths.size(), 4u);
