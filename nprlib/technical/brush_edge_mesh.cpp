@@ -1,6 +1,7 @@
 #include "technical/brush_edge_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 #include "classic/abi_access.h"
@@ -134,6 +135,9 @@ void BrushEdgeMesh::upload(gl::ObjectTracker* tracker,
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
+// Faces meeting at less than this: one plane, up to rounding.
+constexpr float kFlatDegrees = 0.01f;
+
 std::span<const uint32_t> BrushEdgeMesh::line_indices_of(std::span<const uint32_t> surfaces) const {
     if (++stamp_ == 0) {  // wrapped: old stamps could match again
         std::fill(edge_stamps_.begin(), edge_stamps_.end(), 0);
@@ -144,6 +148,7 @@ std::span<const uint32_t> BrushEdgeMesh::line_indices_of(std::span<const uint32_
         for (const uint32_t edge : table_.shared_edges_of(surface)) {
             if (edge_stamps_[edge] == stamp_) continue;
             edge_stamps_[edge] = stamp_;
+            if (std::abs(table_.edges()[edge].dihedral_degrees) < kFlatDegrees) continue;
             line_indices_.push_back(edge * 2);
             line_indices_.push_back(edge * 2 + 1);
         }

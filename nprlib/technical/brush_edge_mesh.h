@@ -46,8 +46,9 @@ class BrushEdgeMesh {
     GLuint vertex_array() const { return vertex_array_.id(); }
 
     // GL_LINES indices (2e, 2e + 1 for edge e) of the shared edges of `surfaces`, each edge
-    // once; surface indices out of range are skipped. The span points into this mesh's scratch
-    // and stays valid until the next call (one thread, the GL thread, calls it).
+    // once, less the flat ones (faces in one plane: never a silhouette, never a crease; BSP
+    // splits leave many); surface indices out of range are skipped. The span points into this
+    // mesh's scratch and stays valid until the next call (one thread, the GL thread, calls it).
     std::span<const uint32_t> line_indices_of(std::span<const uint32_t> surfaces) const;
 
   private:

@@ -908,6 +908,32 @@ TEST_F(BrushEdgeDrawTest, WorldListNamesEachVisibleEdgeOnce) {
     }
 }
 
+// Two floor tiles in one plane (a BSP split) and a wall on one of them: the tiles' shared edge
+// can never be a silhouette or a crease and is left out of the list; the wall's is listed.
+TEST_F(BrushEdgeDrawTest, WorldListLeavesOutEdgesBetweenFacesOfOnePlane) {
+    PolygonBrush brush;
+    const uint32_t a = brush.vertex({0, 0, 0}), b = brush.vertex({32, 0, 0});
+    const uint32_t c = brush.vertex({32, 32, 0}), d = brush.vertex({0, 32, 0});
+    const uint32_t e = brush.vertex({64, 0, 0}), f = brush.vertex({64, 32, 0});
+    const uint32_t top_a = brush.vertex({0, 0, 32}), top_d = brush.vertex({0, 32, 32});
+    brush.add_polygon({a, b, c, d}, {0, 0, 1});
+    brush.add_polygon({b, e, f, c}, {0, 0, 1});
+    brush.add_polygon({a, d, top_d, top_a}, {1, 0, 0});
+    make_mesh(brush.build());
+    ASSERT_EQ(mesh_->stats().shared_edges, 2u);
+    const std::vector<uint32_t> all = {0, 1, 2};
+    const std::span<const uint32_t> lines = mesh_->line_indices_of(all);
+    ASSERT_EQ(lines.size(), 2u);
+    const BrushEdge& listed = mesh_->table().edges()[lines[0] / 2];
+    EXPECT_NEAR(std::abs(listed.dihedral_degrees), 90.0f, 0.01f);
+    // Both edges exist in the table; only the flat one is left out.
+    int flat = 0;
+    for (const BrushEdge& edge : mesh_->table().edges()) {
+        if (!edge.is_boundary() && std::abs(edge.dihedral_degrees) < 0.01f) ++flat;
+    }
+    EXPECT_EQ(flat, 1);
+}
+
 // The world's boundary edges are not drawn; a brush entity's are, as silhouettes, while their
 // face looks at the eye. One lone quad seen from the front, then from behind.
 TEST_F(BrushEdgeDrawTest, BoundaryEdgesOutlineEntitiesOnly) {
