@@ -300,9 +300,10 @@ enum nqr_entity_flags {
     NQR_ENTITY_STATIC = 1u << 1,    /* from svc_spawnstatic */
     NQR_ENTITY_TEMP = 1u << 2,      /* beams, explosions added by the client */
     NQR_ENTITY_FULLBRIGHT = 1u << 3, /* ignore lighting (EF_BRIGHTFIELD, muzzle flash…) */
-    /* Since 1.1: in the PVS but its bounding sphere (for an alias model, or the box of this
-     * frame's two poses) is outside the view frustum, so nothing of the model itself is on screen. Listed anyway for effects that reach into the view
-     * (shadows, reflections); drawers of the model skip it (nprlib's drawers do). */
+    /* Since 1.1: in the PVS but its bounding sphere, or for an alias model the box of this
+     * frame's two poses, is outside the view frustum, so nothing of the model itself is on
+     * screen. Listed anyway for effects that reach into the view (shadows, reflections);
+     * drawers of the model skip it (nprlib's drawers do). */
     NQR_ENTITY_OUTSIDE_VIEW = 1u << 4
 };
 
