@@ -110,6 +110,7 @@ std::unique_ptr<BrushEdgeMesh> BrushEdgeMesh::create(gl::ObjectTracker* tracker,
         return nullptr;
     }
     mesh->upload(tracker, edge_vertices(brush, mesh->table_, palette_rgb));
+    mesh->index_drawable_edges();
     mesh->line_indices_.reserve(mesh->table_.edges().size() * 2);
     mesh->edge_stamps_.assign(mesh->table_.edges().size(), 0);
     return mesh;
@@ -138,6 +139,18 @@ void BrushEdgeMesh::upload(gl::ObjectTracker* tracker,
 // Faces meeting at less than this: one plane, up to rounding.
 constexpr float kFlatDegrees = 0.01f;
 
+void BrushEdgeMesh::index_drawable_edges() {
+    first_drawable_.assign(1, 0);
+    for (uint32_t surface = 0; surface < table_.num_surfaces(); ++surface) {
+        for (const uint32_t edge : table_.shared_edges_of(surface)) {
+            if (std::abs(table_.edges()[edge].dihedral_degrees) >= kFlatDegrees) {
+                drawable_edges_.push_back(edge);
+            }
+        }
+        first_drawable_.push_back(static_cast<uint32_t>(drawable_edges_.size()));
+    }
+}
+
 std::span<const uint32_t> BrushEdgeMesh::line_indices_of(std::span<const uint32_t> surfaces) const {
     if (++stamp_ == 0) {  // wrapped: old stamps could match again
         std::fill(edge_stamps_.begin(), edge_stamps_.end(), 0);
@@ -145,10 +158,11 @@ std::span<const uint32_t> BrushEdgeMesh::line_indices_of(std::span<const uint32_
     }
     line_indices_.clear();  // keeps the capacity reserved at create
     for (const uint32_t surface : surfaces) {
-        for (const uint32_t edge : table_.shared_edges_of(surface)) {
+        if (surface + 1 >= first_drawable_.size()) continue;
+        for (uint32_t i = first_drawable_[surface]; i < first_drawable_[surface + 1]; ++i) {
+            const uint32_t edge = drawable_edges_[i];
             if (edge_stamps_[edge] == stamp_) continue;
             edge_stamps_[edge] = stamp_;
-            if (std::abs(table_.edges()[edge].dihedral_degrees) < kFlatDegrees) continue;
             line_indices_.push_back(edge * 2);
             line_indices_.push_back(edge * 2 + 1);
         }

@@ -54,10 +54,14 @@ class BrushEdgeMesh {
   private:
     BrushEdgeMesh() = default;
     void upload(gl::ObjectTracker* tracker, const std::vector<BrushEdgeVertex>& vertices);
+    void index_drawable_edges();
 
     BrushEdgeTable table_;
     gl::VertexArray vertex_array_;
     gl::Buffer vertices_;
+    // Per surface (first_drawable_[s] to first_drawable_[s + 1] in drawable_edges_), its shared
+    // edges that are not flat, made once at create.
+    std::vector<uint32_t> first_drawable_, drawable_edges_;
     // Per-frame scratch: an edge is listed when its stamp differs from the call's stamp.
     mutable std::vector<uint32_t> line_indices_;  // capacity 2 per edge, reserved at create
     mutable std::vector<uint32_t> edge_stamps_;
