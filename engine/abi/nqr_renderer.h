@@ -43,7 +43,7 @@ extern "C" {
 #endif
 
 #define NQR_ABI_VERSION_MAJOR 1u
-#define NQR_ABI_VERSION_MINOR 1u
+#define NQR_ABI_VERSION_MINOR 2u
 #define NQR_ABI_VERSION ((NQR_ABI_VERSION_MAJOR << 16) | NQR_ABI_VERSION_MINOR)
 #define NQR_ABI_MAJOR(v) ((uint32_t)(v) >> 16)
 #define NQR_ENTRY_POINT "nqr_get_renderer"
@@ -301,10 +301,17 @@ enum nqr_entity_flags {
     NQR_ENTITY_TEMP = 1u << 2,      /* beams, explosions added by the client */
     NQR_ENTITY_FULLBRIGHT = 1u << 3, /* ignore lighting (EF_BRIGHTFIELD, muzzle flash…) */
     /* Since 1.1: in the PVS but its bounding sphere, or for an alias model the box of this
-     * frame's two poses, is outside the view frustum, so nothing of the model itself is on
-     * screen. Listed anyway for effects that reach into the view (shadows, reflections);
+     * frame's two poses (since 1.2 also its blended vertices), is outside the view frustum, so
+     * nothing of the model itself is on screen. Listed anyway for effects that reach into the view (shadows, reflections);
      * drawers of the model skip it (nprlib's drawers do). */
-    NQR_ENTITY_OUTSIDE_VIEW = 1u << 4
+    NQR_ENTITY_OUTSIDE_VIEW = 1u << 4,
+    /* Since 1.2: inside the frustum, but at every pixel centre of the camera's viewport it
+     * could cover, one of the frame's visible world surfaces (an opaque one: not sky, liquid or
+     * fence) lies nearer than any part of the model, so once those are drawn with depth writes
+     * the depth test rejects all of its fragments. Listed, like OUTSIDE_VIEW, for effects that
+     * reach past the model (shadows); drawers that draw the world that way skip it (nprlib's
+     * drawers do); one that draws the world see-through or at another resolution must not. */
+    NQR_ENTITY_OCCLUDED = 1u << 5
 };
 
 typedef struct nqr_entity {

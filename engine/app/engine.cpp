@@ -71,14 +71,18 @@ std::string Engine::user_dir() const {
 
 bool Engine::start() {
     for (const auto& e : options_.errors) print("command line: " + e);
-    cvars_.r_plugin = host_.cvars().register_cvar(
-        {"r_defaultplugin", kDefaultPlugin, kCvarArchive,
-         "renderer plugin loaded at start-up (r_plugin sets it)", {}, {}});
+    cvars_.r_plugin =
+        host_.cvars().register_cvar({"r_defaultplugin",
+                                     kDefaultPlugin,
+                                     kCvarArchive,
+                                     "renderer plugin loaded at start-up (r_plugin sets it)",
+                                     {},
+                                     {}});
     cvars_.fov = host_.cvars().register_cvar(
         {"fov", "90", kCvarArchive, "horizontal field of view in degrees", 10.0f, 170.0f});
     cvars_.host_maxfps = host_.cvars().register_cvar(
-        {"host_maxfps", "250", kCvarArchive,
-         "frame rate cap outside timedemo (0 = uncapped)", 0.0f, 10000.0f});
+        {"host_maxfps", "250", kCvarArchive, "frame rate cap outside timedemo (0 = uncapped)", 0.0f,
+         10000.0f});
     cvars_.showroom_time = host_.cvars().register_cvar(
         {"showroom_time", "-1", 0,
          "showroom clock in seconds: -1 follows the wall clock, >= 0 holds the scene still", -1.0f,
@@ -86,6 +90,10 @@ bool Engine::start() {
     cvars_.viewmodel_quake = host_.cvars().register_cvar(
         {"r_viewmodel_quake", "0", kCvarArchive,
          "1: raise the weapon with the status bar's size, as GLQuake did (0: as QuakeSpasm)", 0.0f,
+         1.0f});
+    cvars_.occlusion = host_.cvars().register_cvar(
+        {"r_occlusion", "1", kCvarArchive,
+         "1: models the world hides completely are flagged so plugins skip them (0: off)", 0.0f,
          1.0f});
     cvars_.gamma = host_.cvars().register_cvar(
         {"gamma", "1", kCvarArchive,
@@ -113,6 +121,12 @@ bool Engine::start() {
         print("gamma: " + gamma.error().message);
     }
     gpu_timers_.init(true);
+    // Occlusion culling samples pixel centres; a multisampled screen (a driver's forced
+    // anti-aliasing) covers other points of the pixel too.
+    GLint screen_samples = 0;
+    glGetIntegerv(GL_SAMPLES, &screen_samples);
+    multisampled_screen_ = screen_samples > 1;
+    if (multisampled_screen_) print("multisampled screen: r_occlusion has no effect");
 
     HostServicesWiring wiring;
     wiring.host = &host_;
@@ -140,9 +154,11 @@ bool Engine::start() {
     std::copy(palette.begin(), palette.end(), pal);
     services_->set_palette(pal);
     if (game_data_.colormap) {
-        services_->set_colormap(game_data_.colormap->table.data(), game_data_.colormap->table.size());
+        services_->set_colormap(game_data_.colormap->table.data(),
+                                game_data_.colormap->table.size());
     }
-    std::string plugin_dir = command_line_.value("-plugindir").value_or(executable_dir() + "/plugins");
+    std::string plugin_dir =
+        command_line_.value("-plugindir").value_or(executable_dir() + "/plugins");
     plugins_ = std::make_unique<PluginHost>(*services_, plugin_dir);
     dispatch_ = std::make_unique<RenderDispatch>(*plugins_, &gpu_timers_);
 
@@ -217,8 +233,8 @@ bool Engine::open_window() {
 
 void Engine::load_initial_plugin() {
     if (plugins_->active()) return;
-    for (const std::string& name : {cvars_.r_plugin->string(), std::string(kDefaultPlugin),
-                                    std::string("null")}) {
+    for (const std::string& name :
+         {cvars_.r_plugin->string(), std::string(kDefaultPlugin), std::string("null")}) {
         std::string why = dispatch_->load_plugin(name);
         if (why.empty()) {
             print("renderer: " + plugins_->active_name());
@@ -335,6 +351,7 @@ void Engine::render_demo(double real_time, float frame_time) {
     settings.view_model_lift =
         cvars_.viewmodel_quake->value() != 0 ? view_model_lift_for(hud_->viewsize()) : 0.0f;
     ViewResult view = compute_view(demo_->client(), view_state_, settings);
+    scene_.set_occlusion_culling(cvars_.occlusion->value() != 0 && !multisampled_screen_);
     const nqr_frame& frame =
         scene_.build(level, demo_->client(), view, camera_for(view), real_time, frame_time);
     dispatch_->draw(frame);
@@ -344,8 +361,8 @@ void Engine::render_demo(double real_time, float frame_time) {
 }
 
 void Engine::render_showroom(double real_time, float frame_time) {
-    CameraSetup camera = Showroom::default_camera(window_->drawable_width(),
-                                                  window_->drawable_height());
+    CameraSetup camera =
+        Showroom::default_camera(window_->drawable_width(), window_->drawable_height());
     camera.fov_x = cvars_.fov->value();
     if (float fixed = cvars_.showroom_time->value(); fixed >= 0) {  // a still scene
         real_time = fixed;

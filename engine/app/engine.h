@@ -42,11 +42,12 @@ struct EngineCvars {
     Cvar* host_maxfps = nullptr;
     Cvar* showroom_time = nullptr;
     Cvar* viewmodel_quake = nullptr;
+    Cvar* occlusion = nullptr;
     Cvar* gamma = nullptr;
 };
 
 class Engine {
-public:
+  public:
     explicit Engine(const CommandLine& command_line);
     ~Engine();
     Engine(const Engine&) = delete;
@@ -61,7 +62,7 @@ public:
     // Console output: the console, and stdout so headless runs and logs see everything.
     void print(std::string_view text);
 
-private:
+  private:
     // engine.cpp
     void mount_game_data();
     bool open_window();
@@ -125,6 +126,7 @@ private:
     double demo_real_time_ = 0;        // wall clock of the demo frame drawn last (for pause)
     uint64_t frame_count_ = 0;
     bool quit_ = false;
+    bool multisampled_screen_ = false;  // occlusion culling is then off
     int exit_status_ = 0;
 };
 

@@ -17,6 +17,8 @@ ModelInfo client_model_info(const RenderModel* model) {
 }  // namespace
 
 void Level::clear() {
+    occlusion_.reset();
+    occluders_.reset();
     culler_.reset();
     lights_.reset();
     ids_.clear();
@@ -45,6 +47,8 @@ Result<bool> Level::load(ClientState& client) {
 
     const BrushModelData* data = world_->brush_data();
     culler_ = std::make_unique<WorldCuller>(data->bsp());
+    occluders_ = std::make_unique<OccluderMesh>(data->abi(), bsp_model_ranges(data->bsp()));
+    occlusion_ = std::make_unique<OcclusionCuller>(*occluders_);
     auto entities = parse_entities(data->bsp().entities, names[1], data->bsp().entities_offset);
     std::vector<LightEntity> lights;
     if (entities) {

@@ -10,12 +10,13 @@
 #include "client/client_state.h"
 #include "render/light_sampler.h"
 #include "render/model_cache.h"
+#include "render/occlusion_culler.h"
 #include "render/world_culler.h"
 
 namespace nq {
 
 class Level {
-public:
+  public:
     explicit Level(ModelCache::FileReader reader) : cache_(std::move(reader)) {}
 
     // Loads the world (model_names()[1]) and every precached model; missing models become
@@ -30,14 +31,17 @@ public:
     uint32_t model_kind(nqr_model_id id) const;
     const Bsp* world_bsp() const;
     WorldCuller* culler() { return culler_.get(); }
+    OcclusionCuller* occlusion() { return occlusion_.get(); }
     const LightSampler* light_sampler() const { return lights_.get(); }
     std::vector<std::string> take_warnings();
 
-private:
+  private:
     ModelCache cache_;
     const RenderModel* world_ = nullptr;
     std::vector<nqr_model_id> ids_;  // by precache index
     std::unique_ptr<WorldCuller> culler_;
+    std::unique_ptr<OccluderMesh> occluders_;
+    std::unique_ptr<OcclusionCuller> occlusion_;
     std::unique_ptr<LightSampler> lights_;
     std::vector<std::string> warnings_;
 };

@@ -19,6 +19,19 @@ float minimum_light(const VisibleEntity& v, int view_entity) {
     return 0.0f;
 }
 
+// The box holding an alias entity's blended pose this frame, in model space: blending moves each
+// vertex between its places in the two poses, inside both poses' boxes' union.
+bool frame_pose_box(const RenderModel& model, const nqr_entity& e,
+                    AliasModelData::PoseBounds& box) {
+    const AliasModelData* alias = model.alias_data();
+    if (!alias) return false;
+    const AliasModelData::PoseBounds a = alias->pose_bounds(e.pose0);
+    const AliasModelData::PoseBounds b = alias->pose_bounds(e.pose1);
+    box.mins = glm::min(a.mins, b.mins);
+    box.maxs = glm::max(a.maxs, b.maxs);
+    return true;
+}
+
 }  // namespace
 
 SceneBuilder::SceneBuilder()
@@ -28,6 +41,9 @@ SceneBuilder::SceneBuilder()
       visible_(kMaxEntities),
       smoothed_(kSmootherSlots) {
     for (auto& list : by_kind_) list.reserve(kMaxEntities);
+    occlusion_candidates_.reserve(kMaxEntities);
+    occluding_brushes_.reserve(kMaxEntities);
+    pose_points_.resize(1024);  // MDL's usual limit; a larger model grows it once
     frame_.size = sizeof(nqr_frame);
     lightstyles_.fill(1.0f);
 }
@@ -86,8 +102,15 @@ const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
     }
 
     light_dt_ = static_cast<float>(client.time() - client.old_time());
+    occlusion_ = occlusion_enabled_ && level.culler() ? level.occlusion() : nullptr;
+    occlusion_candidates_.clear();
+    occluding_brushes_.clear();
+    const RenderModel* world = level.models().get(level.model_id(1));
+    world_brush_ = world ? world->abi()->brush : nullptr;
+    if (occlusion_) occlusion_->begin_frame(frame_.camera);
     collect_visible_entities(client, view, visible_);
     for (const VisibleEntity& v : visible_.entities()) add_entity(level, client, v);
+    flag_occluded_entities();
     link_lists();
     return frame_;
 }
@@ -107,13 +130,99 @@ void SceneBuilder::set_view_frustum() {
 // placed, are often far smaller (a monster's sphere reaches into the view while the monster is
 // off screen: every frame its faces, edges and shadows would be worked out for nothing).
 bool SceneBuilder::pose_outside_view(const RenderModel& model, const nqr_entity& e) const {
+    AliasModelData::PoseBounds box;
+    return frame_pose_box(model, e, box) &&
+           frustum_.placed_box_outside(load_matrix(e.model_matrix), box.mins, box.maxs);
+}
+
+// Alias models only: most of the edge and face work of a frame is theirs. Tested by the
+// vertices of the pose drawn (a box's corners reach out of alcoves and past door frames the
+// model itself stays behind).
+void SceneBuilder::add_occlusion_candidate(const RenderModel& model, nqr_entity& e) {
     const AliasModelData* alias = model.alias_data();
-    if (!alias) return false;
-    const AliasModelData::PoseBounds a = alias->pose_bounds(e.pose0);
-    const AliasModelData::PoseBounds b = alias->pose_bounds(e.pose1);
-    // Blending moves each vertex between its places in the two poses: inside both boxes' union.
-    return frustum_.placed_box_outside(load_matrix(e.model_matrix), glm::min(a.mins, b.mins),
-                                       glm::max(a.maxs, b.maxs));
+    if (!occlusion_ || !alias || occlusion_candidates_.size() == kMaxEntities) return;
+    const glm::mat4 placement = load_matrix(e.model_matrix);
+    int32_t candidate = OcclusionCuller::kNotHideable;
+    if (blend_pose_points(alias->abi(), e)) {
+        candidate =
+            occlusion_->add_points(placement, {pose_points_.data(), alias->abi().num_vertices});
+    } else {
+        AliasModelData::PoseBounds box;
+        frame_pose_box(model, e, box);
+        candidate = occlusion_->add_box(placement, box.mins, box.maxs);
+    }
+    if (candidate == OcclusionCuller::kOffScreen) {  // beyond a screen edge the box still met
+        e.flags |= NQR_ENTITY_OUTSIDE_VIEW;
+        ++counts_.entities_outside_view;
+        return;
+    }
+    if (candidate != OcclusionCuller::kNotHideable) {
+        occlusion_candidates_.push_back({&e, candidate, &alias->abi()});
+    }
+}
+
+// The entity's pose as the plugins blend it, in model space; false when its poses or blend
+// are out of range (then its box stands in).
+bool SceneBuilder::blend_pose_points(const nqr_alias_model& a, const nqr_entity& e) {
+    if (e.pose0 >= a.num_poses || e.pose1 >= a.num_poses || !(e.lerp >= 0.0f && e.lerp <= 1.0f) ||
+        a.num_vertices == 0) {
+        return false;
+    }
+    if (pose_points_.size() < a.num_vertices) pose_points_.resize(a.num_vertices);  // once
+    const nqr_alias_vertex* pose0 = a.poses + size_t(e.pose0) * a.num_vertices;
+    const nqr_alias_vertex* pose1 = a.poses + size_t(e.pose1) * a.num_vertices;
+    const glm::vec3 scale(a.scale[0], a.scale[1], a.scale[2]);
+    const glm::vec3 origin(a.origin[0], a.origin[1], a.origin[2]);
+    for (uint32_t v = 0; v < a.num_vertices; ++v) {
+        const glm::vec3 p0(pose0[v].v[0], pose0[v].v[1], pose0[v].v[2]);
+        const glm::vec3 p1(pose1[v].v[0], pose1[v].v[1], pose1[v].v[2]);
+        pose_points_[v] = scale * (p0 + (p1 - p0) * e.lerp) + origin;
+    }
+    return true;
+}
+
+// Brush entities of the map itself (doors, platforms, walls that move), drawn opaque with depth
+// writes, hide what is behind them as the world does; translucent ones do not, nor models from
+// other files (item boxes).
+void SceneBuilder::add_brush_occluder(const RenderModel& model, const nqr_entity& e) {
+    const nqr_model& abi = *model.abi();
+    const bool opaque = e.alpha <= 0.0f || e.alpha >= 1.0f;
+    if (!occlusion_ || abi.kind != NQR_MODEL_BRUSH || abi.brush == nullptr ||
+        abi.brush != world_brush_ || !opaque || occluding_brushes_.size() == kMaxEntities) {
+        return;
+    }
+    occluding_brushes_.push_back({&e, &abi});
+}
+
+// A model in an alcove or behind a door often has farther pixels inside its screen rectangle
+// but beside it; its triangles one by one are hidden.
+bool SceneBuilder::all_triangles_hidden(const OcclusionCandidate& c) const {
+    if (c.alias == nullptr || c.alias->num_triangles == 0) return false;
+    for (uint32_t t = 0; t < c.alias->num_triangles; ++t) {
+        const int32_t* record = c.alias->triangles + size_t(t) * 4;  // facesfront, v0, v1, v2
+        if (record[1] < 0 || record[2] < 0 || record[3] < 0 ||
+            !occlusion_->triangle_hidden(c.candidate, uint32_t(record[1]), uint32_t(record[2]),
+                                         uint32_t(record[3]))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+void SceneBuilder::flag_occluded_entities() {
+    if (!occlusion_ || occlusion_candidates_.empty()) return;
+    occlusion_->rasterize_world({visible_surfaces_.data(), frame_.num_visible_surfaces});
+    for (const OccludingBrush& b : occluding_brushes_) {
+        const nqr_entity& e = *b.entity;
+        occlusion_->rasterize_model(b.model->first_surface, b.model->num_surfaces,
+                                    load_matrix(e.model_matrix),
+                                    glm::vec3(e.eye_model[0], e.eye_model[1], e.eye_model[2]));
+    }
+    for (const OcclusionCandidate& c : occlusion_candidates_) {
+        if (!occlusion_->hidden(c.candidate) && !all_triangles_hidden(c)) continue;
+        c.entity->flags |= NQR_ENTITY_OCCLUDED;
+        ++counts_.entities_occluded;
+    }
 }
 
 void SceneBuilder::add_entity(Level& level, const ClientState& client, const VisibleEntity& v) {
@@ -142,6 +251,9 @@ void SceneBuilder::add_entity(Level& level, const ClientState& client, const Vis
     if (!view_model && (frustum_.sphere_outside(origin, radius) || pose_outside_view(*model, e))) {
         e.flags |= NQR_ENTITY_OUTSIDE_VIEW;
         ++counts_.entities_outside_view;
+    } else if (!view_model) {
+        add_occlusion_candidate(*model, e);
+        add_brush_occluder(*model, e);
     }
     if (const LightSampler* sampler = level.light_sampler()) {
         EntityLightQuery query;
@@ -171,6 +283,7 @@ nqr_frame& SceneBuilder::begin_custom(const CameraSetup& camera, double time, do
     frame_.flags = 0;
     fill_camera(camera, frame_.camera);
     set_view_frustum();
+    occlusion_ = nullptr;
     lightstyles_.fill(1.0f);
     frame_.world = 0;
     frame_.num_visible_surfaces = 0;

@@ -22,6 +22,7 @@ struct SceneCounts {
     uint32_t entities_considered = 0;
     uint32_t entities_culled = 0;        // outside the PVS: left out of the frame
     uint32_t entities_outside_view = 0;  // in the PVS, outside the frustum: flagged
+    uint32_t entities_occluded = 0;      // on screen, hidden behind the world: flagged
     uint32_t entities_without_model = 0;
 };
 
@@ -48,6 +49,9 @@ class SceneBuilder {
     nqr_entity& add_custom_entity(uint32_t kind);  // appended and listed under its kind
     const nqr_frame& finish_custom();
 
+    // Whether entities hidden behind the world are flagged NQR_ENTITY_OCCLUDED (r_occlusion).
+    void set_occlusion_culling(bool enabled) { occlusion_enabled_ = enabled; }
+
     const SceneCounts& counts() const { return counts_; }
     VisibleEntityList& visible_entities() { return visible_; }
 
@@ -56,6 +60,10 @@ class SceneBuilder {
     void set_view_frustum();  // frustum_ and frame_.view_planes from the camera
     void add_entity(Level& level, const ClientState& client, const VisibleEntity& v);
     bool pose_outside_view(const RenderModel& model, const nqr_entity& e) const;
+    void add_occlusion_candidate(const RenderModel& model, nqr_entity& e);
+    void add_brush_occluder(const RenderModel& model, const nqr_entity& e);
+    void flag_occluded_entities();
+    bool blend_pose_points(const nqr_alias_model& alias, const nqr_entity& e);
     void link_lists();
 
     nqr_frame frame_{};
@@ -74,6 +82,22 @@ class SceneBuilder {
     std::vector<SmoothedLight> smoothed_;
     float light_dt_ = 0;
     Frustum frustum_;  // this frame's side planes
+    bool occlusion_enabled_ = true;
+    OcclusionCuller* occlusion_ = nullptr;  // this frame's, when culling by occlusion
+    struct OcclusionCandidate {
+        nqr_entity* entity;
+        int32_t candidate;
+        const nqr_alias_model* alias;
+    };
+    bool all_triangles_hidden(const OcclusionCandidate& c) const;
+    std::vector<OcclusionCandidate> occlusion_candidates_;
+    struct OccludingBrush {
+        const nqr_entity* entity;
+        const nqr_model* model;
+    };
+    std::vector<OccludingBrush> occluding_brushes_;
+    const nqr_brush_model* world_brush_ = nullptr;  // brush entities of this map occlude
+    std::vector<glm::vec3> pose_points_;            // one alias entity's blended vertices
     SceneCounts counts_;
 };
 

@@ -23,9 +23,11 @@ inline bool frame_has_view_planes(const nqr_frame& frame) {
     return frame.size >= offsetof(nqr_frame, view_planes) + sizeof(frame.view_planes);
 }
 
-// An entity whose model can be on screen: readable and not flagged outside the view frustum.
+// An entity whose model can be on screen: readable, not flagged outside the view frustum nor
+// hidden behind the world.
 inline bool entity_in_view(const nqr_entity* entity) {
-    return has_known_prefix(entity) && (entity->flags & NQR_ENTITY_OUTSIDE_VIEW) == 0;
+    return has_known_prefix(entity) &&
+           (entity->flags & (NQR_ENTITY_OUTSIDE_VIEW | NQR_ENTITY_OCCLUDED)) == 0;
 }
 
 // Element i of a size-prefixed array (its first element gives the stride).

@@ -16,6 +16,7 @@
 #include "client/visible_entities.h"
 #include "formats/bsp.h"
 #include "fs/vfs.h"
+#include "render/view_transform.h"
 #include "support/test_data.h"
 
 namespace nq::test {
@@ -43,6 +44,26 @@ inline uint64_t timedemo_frame_count(const Vfs& vfs, const std::string& file) {
     }
     if (player->error()) throw std::runtime_error(player->error()->to_string());
     return player->timedemo_frames();
+}
+
+// An alias entity's blended pose in the world, as the plugins draw it (empty when a pose is out
+// of range).
+inline std::vector<glm::vec3> blended_world_vertices(const nqr_alias_model& a,
+                                                     const nqr_entity& e) {
+    const glm::mat4 model = load_matrix(e.model_matrix);
+    std::vector<glm::vec3> out;
+    if (e.pose0 >= a.num_poses || e.pose1 >= a.num_poses) return out;
+    for (uint32_t v = 0; v < a.num_vertices; ++v) {
+        const nqr_alias_vertex& p0 = a.poses[size_t(e.pose0) * a.num_vertices + v];
+        const nqr_alias_vertex& p1 = a.poses[size_t(e.pose1) * a.num_vertices + v];
+        glm::vec3 local;
+        for (int c = 0; c < 3; ++c) {
+            const float blended = p0.v[c] * (1.0f - e.lerp) + p1.v[c] * e.lerp;
+            local[c] = a.scale[c] * blended + a.origin[c];
+        }
+        out.emplace_back(model * glm::vec4(local, 1.0f));
+    }
+    return out;
 }
 
 // `vfs` must outlive the replay (the level reads its models through it).

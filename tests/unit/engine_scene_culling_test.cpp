@@ -24,24 +24,6 @@ struct CullingReport {
     std::string first_wrong;
 };
 
-// The entity's blended pose in the world, as the plugins draw it.
-std::vector<glm::vec3> world_vertices(const nqr_alias_model& a, const nqr_entity& e) {
-    const glm::mat4 model = load_matrix(e.model_matrix);
-    std::vector<glm::vec3> out;
-    if (e.pose0 >= a.num_poses || e.pose1 >= a.num_poses) return out;
-    for (uint32_t v = 0; v < a.num_vertices; ++v) {
-        const nqr_alias_vertex& p0 = a.poses[size_t(e.pose0) * a.num_vertices + v];
-        const nqr_alias_vertex& p1 = a.poses[size_t(e.pose1) * a.num_vertices + v];
-        glm::vec3 local;
-        for (int c = 0; c < 3; ++c) {
-            const float blended = p0.v[c] * (1.0f - e.lerp) + p1.v[c] * e.lerp;
-            local[c] = a.scale[c] * blended + a.origin[c];
-        }
-        out.emplace_back(model * glm::vec4(local, 1.0f));
-    }
-    return out;
-}
-
 bool all_behind_one_plane(const Frustum& f, const std::vector<glm::vec3>& points) {
     for (uint32_t i = 0; i < f.num_planes; ++i) {
         const FrustumPlane& p = f.planes[i];
@@ -88,7 +70,8 @@ CullingReport play_and_check(const std::string& demo) {
             if (!frustum.sphere_outside(glm::vec3(e.origin[0], e.origin[1], e.origin[2]), radius)) {
                 ++r.flagged_by_pose_only;
             }
-            if (!all_behind_one_plane(frustum, world_vertices(model->alias_data()->abi(), e)) &&
+            if (!all_behind_one_plane(
+                    frustum, test::blended_world_vertices(model->alias_data()->abi(), e)) &&
                 r.flagged_with_a_vertex_in_view++ == 0) {
                 r.first_wrong = demo + " frame " + std::to_string(frame) + " entity " +
                                 std::to_string(e.number) + " (" + model->name() + ")";

@@ -1009,24 +1009,7 @@ class TimingTarget {
   public:
     static constexpr int kWidth = 640, kHeight = 480;
 
-    TimingTarget() {
-        glGenFramebuffers(1, &framebuffer_);
-        glGenRenderbuffers(2, renderbuffers_);
-        glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kWidth, kHeight);
-        glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kWidth, kHeight);
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                  renderbuffers_[0]);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                                  renderbuffers_[1]);
-        glViewport(0, 0, kWidth, kHeight);
-    }
-    ~TimingTarget() {
-        glDeleteFramebuffers(1, &framebuffer_);
-        glDeleteRenderbuffers(2, renderbuffers_);
-    }
+    TimingTarget() : framebuffer_(kWidth, kHeight) {}
 
     // Pixels that are not the clear colour (black).
     int drawn_pixels() const {
@@ -1039,8 +1022,7 @@ class TimingTarget {
     }
 
   private:
-    GLuint framebuffer_ = 0;
-    GLuint renderbuffers_[2] = {};
+    SizedFramebuffer framebuffer_;
 };
 
 TEST_F(BrushEdgeDrawTest, StartMapWorldEdgesDrawWithoutAllocatingAndReportTheirCost) {

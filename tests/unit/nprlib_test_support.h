@@ -176,6 +176,44 @@ class GlTestContext {
     GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0;
 };
 
+// An RGBA8 + 24-bit depth framebuffer of any size, bound (with its viewport) on creation.
+class SizedFramebuffer {
+  public:
+    SizedFramebuffer(int width, int height) : width_(width), height_(height) {
+        glGenFramebuffers(1, &framebuffer_);
+        glGenRenderbuffers(2, renderbuffers_);
+        glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+        glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        bind();
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  renderbuffers_[0]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  renderbuffers_[1]);
+    }
+    ~SizedFramebuffer() {
+        glDeleteFramebuffers(1, &framebuffer_);
+        glDeleteRenderbuffers(2, renderbuffers_);
+    }
+    SizedFramebuffer(const SizedFramebuffer&) = delete;
+    SizedFramebuffer& operator=(const SizedFramebuffer&) = delete;
+
+    void bind() const {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        glViewport(0, 0, width_, height_);
+    }
+    bool complete() const {
+        bind();
+        return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    }
+
+  private:
+    int width_, height_;
+    GLuint framebuffer_ = 0;
+    GLuint renderbuffers_[2] = {};
+};
+
 // A fixture base with one GL context per test suite (contexts are slow to make under ASan),
 // checked and bound before every test: class MyTest : public GlSuiteTest<MyTest> { ... }.
 // A derived SetUp() calls GlSuiteTest::SetUp() first and returns on HasFatalFailure().
