@@ -3,12 +3,13 @@
 // Each frame the faces the plugin will draw with depth writes (the world's listed ones and
 // those of opaque brush entities: front-facing, opaque textures) are rasterised into a 1/w
 // buffer at the view's own resolution, sampled at pixel centres as the GPU samples them, but
-// only on the pixels some candidate entity's screen box covers. A face
-// fills pixels right up to edges it shares with another face drawn this frame, and stops short
-// of its other edges (1/128 pixel); its depth is taken from its plane pushed back behind every
-// vertex, less the change across 1/64 pixel. A candidate is hidden when every pixel of its box
-// holds a world face nearer than the box's nearest corner (with a margin of 1/1000 of the
-// distance plus one unit), so the GPU's depth test would reject all of its fragments.
+// only on the pixels some candidate entity's screen rectangle covers. A face fills pixels right
+// up to edges it shares with another face drawn in the same placement, and stops short of its
+// other edges (1/128 pixel); its depth is taken from its plane pushed back behind every vertex,
+// less the change across 1/64 pixel. A candidate is hidden when every pixel of its rectangle
+// (or, for one given by its points, of each of its triangles' rectangles) holds a face nearer
+// than its nearest point there (with a margin of 1/1000 of the distance plus one unit), so the
+// GPU's depth test would reject all of its fragments.
 //
 // Nothing is allocated per frame: buffers follow the viewport's size and are kept.
 #pragma once
