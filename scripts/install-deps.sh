@@ -9,6 +9,7 @@ packages=(
   libsdl2-dev libepoxy-dev libglm-dev
   libopenmesh-dev                   # half-edge meshes for adjacency recovery
   libgtest-dev
+  fteqcc                            # compiles the QuakeC test programs (tests/qc)
   libpng-dev zlib1g-dev             # screenshots (PNG)
   libgl1-mesa-dri libegl-mesa0      # headless OpenGL (llvmpipe) for tests
 )
