@@ -69,29 +69,40 @@ BrushEdge shared_edge(const nqr_brush_model& brush, uint32_t face0, uint32_t fac
 
 // Pairs half-edges by their vertex ids: a pair of ids walked once each way, by two different
 // surfaces and nobody else, is a shared edge. Everything else is returned for geometric
-// matching (`loose` holds indices into half_edges).
+// matching (`loose` holds indices into half_edges). Half-edges are grouped by their pair of ids
+// with a counting sort on the lower id (ids are below id_count), then by the higher id.
 std::vector<BrushEdge> match_by_ids(const nqr_brush_model& brush,
-                                    const std::vector<HalfEdge>& half_edges,
+                                    const std::vector<HalfEdge>& half_edges, uint64_t id_count,
                                     std::vector<uint32_t>& loose) {
-    std::vector<std::pair<uint64_t, uint32_t>> keyed(half_edges.size());
+    std::vector<uint32_t> first(id_count + 1, 0);
+    for (const HalfEdge& h : half_edges) ++first[std::min(h.id0, h.id1) + 1];
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    // Per lower id, (higher id << 32 | half-edge index): sorting a bucket sorts by both.
+    std::vector<uint64_t> keyed(half_edges.size());
+    std::vector<uint32_t> next(first.begin(), first.end() - 1);
     for (uint32_t i = 0; i < half_edges.size(); ++i) {
         const HalfEdge& h = half_edges[i];
-        keyed[i] = {uint64_t{std::min(h.id0, h.id1)} << 32 | std::max(h.id0, h.id1), i};
+        keyed[next[std::min(h.id0, h.id1)]++] = uint64_t{std::max(h.id0, h.id1)} << 32 | i;
     }
-    std::sort(keyed.begin(), keyed.end());
     std::vector<BrushEdge> shared;
-    for (size_t begin = 0; begin < keyed.size();) {
-        size_t end = begin;
-        while (end < keyed.size() && keyed[end].first == keyed[begin].first) ++end;
-        const HalfEdge* a = &half_edges[keyed[begin].second];
-        const HalfEdge* b = end - begin == 2 ? &half_edges[keyed[begin + 1].second] : nullptr;
-        if (b && a->surface != b->surface && a->id0 == b->id1) {
-            if (b->surface < a->surface) std::swap(a, b);
-            shared.push_back(shared_edge(brush, a->surface, b->surface, a->p0, a->p1));
-        } else {
-            for (size_t k = begin; k < end; ++k) loose.push_back(keyed[k].second);
+    for (uint64_t id = 0; id < id_count; ++id) {
+        const auto bucket_begin = keyed.begin() + first[id];
+        const auto bucket_end = keyed.begin() + first[id + 1];
+        std::sort(bucket_begin, bucket_end);  // few half-edges meet at one vertex
+        for (auto begin = bucket_begin; begin != bucket_end;) {
+            auto end = begin;
+            while (end != bucket_end && (*end >> 32) == (*begin >> 32)) ++end;
+            const HalfEdge* a = &half_edges[static_cast<uint32_t>(*begin)];
+            const HalfEdge* b =
+                end - begin == 2 ? &half_edges[static_cast<uint32_t>(*(begin + 1))] : nullptr;
+            if (b && a->surface != b->surface && a->id0 == b->id1) {
+                if (b->surface < a->surface) std::swap(a, b);
+                shared.push_back(shared_edge(brush, a->surface, b->surface, a->p0, a->p1));
+            } else {
+                for (auto k = begin; k != end; ++k) loose.push_back(static_cast<uint32_t>(*k));
+            }
+            begin = end;
         }
-        begin = end;
     }
     return shared;
 }
@@ -156,11 +167,44 @@ void match_geometrically(const nqr_brush_model& brush, const std::vector<HalfEdg
         }
         edges.push_back(shared_edge(brush, face0, face1, from, to));
     }
-    for (const UncoveredPiece& piece : matching.uncovered) {
+    stats.t_junction_edges = static_cast<uint32_t>(matching.matches.size());
+
+    std::vector<CrossableFace> faces;
+    std::vector<glm::vec3> corners;
+    for (uint32_t s = 0; s < brush.num_surfaces; ++s) {
+        if (!surface_owns_edges(brush, s)) continue;
+        const nqr_surface& surface = abi_element(brush.surfaces, s);
+        CrossableFace face;
+        face.first_corner = static_cast<uint32_t>(corners.size());
+        face.num_corners = surface.num_vertices;
+        face.normal = normal_of(brush, s);
+        face.dist = surface.dist;
+        face.surface = s;
+        face.component = component[s];
+        // Corrupt planes must not turn into matches (or into NaN angles to sort by).
+        bool usable = std::abs(glm::length(face.normal) - 1.0f) < 0.01f && std::isfinite(face.dist);
+        for (uint32_t i = 0; i < surface.num_vertices; ++i) {
+            corners.push_back(position(brush, surface.first_vertex + i));
+            usable = usable && usable_position(corners.back());
+        }
+        if (usable) faces.push_back(face);
+    }
+    const FaceCrossingMatching crossing =
+        match_pieces_inside_faces(input, matching.uncovered, faces, corners);
+    for (const FaceCrossing& m : crossing.matches) {
+        uint32_t face0 = input[m.half_edge].surface, face1 = faces[m.face].surface;
+        glm::vec3 from = m.from, to = m.to;
+        if (face1 < face0) {  // the face's half meets the piece walking it the other way
+            std::swap(face0, face1);
+            std::swap(from, to);
+        }
+        edges.push_back(shared_edge(brush, face0, face1, from, to));
+    }
+    for (const UncoveredPiece& piece : crossing.uncovered) {
         edges.push_back({piece.from, piece.to, input[piece.half_edge].surface, kNoFace, 0.0f});
     }
-    stats.t_junction_edges = static_cast<uint32_t>(matching.matches.size());
-    stats.boundary_edges = static_cast<uint32_t>(matching.uncovered.size());
+    stats.inside_face_edges = static_cast<uint32_t>(crossing.matches.size());
+    stats.boundary_edges = static_cast<uint32_t>(crossing.uncovered.size());
 }
 
 }  // namespace
@@ -192,13 +236,14 @@ BrushEdgeTable BrushEdgeTable::build(const nqr_brush_model& brush, std::string& 
         error = "brush model without usable surfaces, positions or vertex ids";
         return table;
     }
-    if (vertex_id_count(brush) > kMaxVertexIds) {
+    const uint64_t id_count = vertex_id_count(brush);
+    if (id_count > kMaxVertexIds) {
         error = "brush model vertex ids out of range";
         return table;
     }
     const std::vector<HalfEdge> half_edges = collect_half_edges(brush, table.stats_);
     std::vector<uint32_t> loose;
-    table.edges_ = match_by_ids(brush, half_edges, loose);
+    table.edges_ = match_by_ids(brush, half_edges, id_count, loose);
     table.stats_.shared_edges = static_cast<uint32_t>(table.edges_.size());
     table.stats_.unmatched_half_edges = static_cast<uint32_t>(loose.size());
     match_geometrically(brush, half_edges, loose, table.edges_, table.stats_);

@@ -8,7 +8,12 @@
 //   2. Quake maps keep some T-junctions: a long side of one face meets two shorter sides of its
 //      neighbours. The half-edges left over are matched geometrically (brush_edge_tjunctions.h):
 //      the overlapping part of two collinear, opposite half-edges becomes a shared edge.
-//   3. What is still uncovered becomes boundary edges (one face only).
+//   3. Some sides end on a face that was never split there (a wall against the middle of a
+//      pillar's side): the part of a leftover side that runs across the inside of another face
+//      of its piece of the model becomes a shared edge with that face.
+//   4. What is still uncovered becomes boundary edges (one face only): sides along sky, sides
+//      whose partner belongs to another model or piece, lines where more sides run one way than
+//      the other (a wall with faces on both sides, into water and into air, meeting a floor).
 // Shared edges keep both faces' planes and the signed dihedral angle, the angle between the
 // two normals: positive for a ridge (convex), negative for a valley (concave). Whether it is a
 // crease (|angle| > the crease cvar) and whether it is a silhouette (one face toward the eye,
@@ -27,13 +32,14 @@
 namespace nq::npr::technical {
 
 struct BrushEdgeStats {
-    uint32_t surfaces = 0;          // surfaces that own edges (valid polygons, not sky)
-    uint32_t edges = 0;             // = shared_edges + t_junction_edges + boundary_edges
-    uint32_t shared_edges = 0;      // matched by vertex ids
-    uint32_t t_junction_edges = 0;  // matched geometrically (overlapping collinear sides)
-    uint32_t boundary_edges = 0;    // one face only (whole sides or uncovered parts of them)
-    uint32_t creases = 0;           // two-face edges bending more than the default crease angle
-    uint32_t half_edges = 0;        // polygon sides of the owning surfaces, zero-length ones out
+    uint32_t surfaces = 0;           // surfaces that own edges (valid polygons, not sky)
+    uint32_t edges = 0;              // = shared + T-junction + inside-face + boundary edges
+    uint32_t shared_edges = 0;       // matched by vertex ids
+    uint32_t t_junction_edges = 0;   // matched geometrically (overlapping collinear sides)
+    uint32_t inside_face_edges = 0;  // a side across the inside of another face (step 3)
+    uint32_t boundary_edges = 0;     // one face only (whole sides or uncovered parts of them)
+    uint32_t creases = 0;            // two-face edges bending more than the default crease angle
+    uint32_t half_edges = 0;         // polygon sides of the owning surfaces, zero-length ones out
     uint32_t unmatched_half_edges = 0;  // left after matching by ids: the geometric pass's input
 };
 

@@ -1,7 +1,8 @@
 // Silhouettes and creases of brush geometry (nprlib/technical: BrushEdgeTable, BrushEdgeMesh,
 // BrushEdgeDrawer). Adjacency on synthetic brushes (a box, an L-shaped step, a T-junction, a
-// waterline where four faces meet, pieces that only line up) and on LibreQuake's maps, checked
-// against geometry computed here; then the edges drawn offscreen: ridge, valley and silhouette
+// waterline where four faces meet, a side ending inside a face, pieces that only line up) and on
+// LibreQuake's maps, checked against geometry computed here (every open edge open for a reason
+// the map's data shows); then the edges drawn offscreen: ridge, valley and silhouette
 // colours where this file's own projection puts the box's edges, nothing on hidden ones, the
 // ridge colour from the texture's smallest mip, no allocation per frame, and the time per frame.
 #include "render_allocation_counter.h"  // replaces operator new for this executable
@@ -9,11 +10,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <numeric>
+#include <unordered_map>
 
 #include "common/file_io.h"
 #include "formats/bsp.h"
@@ -400,6 +404,69 @@ TEST(BrushEdgeTableTest, WaterlinePairsEachWallHalfWithTheWaterFaceItMeets) {
     }
 }
 
+// A wall in the plane x = 0 (facing +x) split at y = 0 into W1 (a pentagon with an extra vertex M
+// (0, -32, 32) on its side y = -32) and W2; a shelf at z = 32 (facing up) from M to (0, 16, 32)
+// and out to x = 32. Its side along x = 0 ends inside W2 and crosses W1 and W2 where no side of
+// theirs runs: it shares its stretch on each with that wall half, a valley.
+TEST(BrushEdgeTableTest, SideEndingInsideAFaceSharesEachStretchWithTheFaceItCrosses) {
+    PolygonBrush brush;
+    const uint32_t a = brush.vertex({0, -32, 0}), b = brush.vertex({0, 0, 0}),
+                   c = brush.vertex({0, 32, 0}), d = brush.vertex({0, 32, 64}),
+                   e = brush.vertex({0, 0, 64}), f = brush.vertex({0, -32, 64}),
+                   m = brush.vertex({0, -32, 32});
+    const uint32_t s1 = brush.vertex({0, 16, 32}), s2 = brush.vertex({32, 16, 32}),
+                   s3 = brush.vertex({32, -32, 32});
+    const uint32_t w1 = brush.add_polygon({a, b, e, f, m}, {1, 0, 0});
+    const uint32_t w2 = brush.add_polygon({b, c, d, e}, {1, 0, 0});
+    const uint32_t shelf = brush.add_polygon({m, s1, s2, s3}, {0, 0, 1});
+    const BrushEdgeTable table = build_table(brush.build());
+    const BrushEdgeStats& stats = table.stats();
+    EXPECT_EQ(stats.half_edges, 13u);
+    EXPECT_EQ(stats.shared_edges, 1u);  // W1-W2
+    EXPECT_EQ(stats.t_junction_edges, 0u);
+    EXPECT_EQ(stats.inside_face_edges, 2u);
+    EXPECT_EQ(stats.boundary_edges, 10u);  // W1: 4, W2: 3, the shelf: 3
+    EXPECT_EQ(stats.edges, 13u);
+    const struct {
+        glm::vec3 from, to;
+        uint32_t wall;
+    } expected[] = {{{0, -32, 32}, {0, 0, 32}, w1}, {{0, 0, 32}, {0, 16, 32}, w2}};
+    for (const auto& x : expected) {
+        const BrushEdge* edge = find_edge(table, x.from, x.to);
+        ASSERT_NE(edge, nullptr) << x.wall;
+        EXPECT_EQ(edge->face0, x.wall);
+        EXPECT_EQ(edge->face1, shelf);
+        EXPECT_NEAR(edge->dihedral_degrees, -90.0f, kAngleTolerance);
+        // The wall's half meets the shelf walking the line against the shelf's outline (-y).
+        EXPECT_GT(edge->v1.y, edge->v0.y);
+        ASSERT_EQ(table.shared_edges_of(x.wall).size(), 2u);  // W1-W2 and this one
+    }
+    EXPECT_EQ(table.shared_edges_of(shelf).size(), 2u);
+}
+
+// The same wall split at z = 32 instead, and the shelf's side along the split: the wall halves'
+// sides pair with each other by vertex ids; the shelf meets neither half's inside, and its side
+// is left without a partner (three faces on one line).
+TEST(BrushEdgeTableTest, SideAlongASplitOfAFaceIsNotInsideIt) {
+    PolygonBrush brush;
+    const uint32_t a = brush.vertex({0, -32, 0}), c = brush.vertex({0, 32, 0}),
+                   d = brush.vertex({0, 32, 64}), f = brush.vertex({0, -32, 64}),
+                   m = brush.vertex({0, -32, 32}), n = brush.vertex({0, 32, 32});
+    const uint32_t s1 = brush.vertex({0, 16, 32}), s2 = brush.vertex({32, 16, 32}),
+                   s3 = brush.vertex({32, -32, 32});
+    brush.add_polygon({a, c, n, m}, {1, 0, 0});
+    brush.add_polygon({m, n, d, f}, {1, 0, 0});
+    const uint32_t shelf = brush.add_polygon({m, s1, s2, s3}, {0, 0, 1});
+    const BrushEdgeTable table = build_table(brush.build());
+    EXPECT_EQ(table.stats().shared_edges, 1u);
+    EXPECT_EQ(table.stats().t_junction_edges, 0u);
+    EXPECT_EQ(table.stats().inside_face_edges, 0u);
+    EXPECT_EQ(table.shared_edges_of(shelf).size(), 0u);
+    const BrushEdge* side = find_edge(table, {0, -32, 32}, {0, 16, 32});
+    ASSERT_NE(side, nullptr);
+    EXPECT_TRUE(side->is_boundary());
+}
+
 // Two floor quads side by side with no vertex in common (as a door beside its frame: compilers
 // number each model's vertices apart): their touching sides stay boundary edges.
 TEST(BrushEdgeTableTest, PiecesWithoutCommonVerticesDoNotJoin) {
@@ -479,18 +546,6 @@ std::vector<glm::vec3> surface_outline(const nqr_brush_model& brush, uint32_t su
     return outline;
 }
 
-bool along_sky(const nqr_brush_model& brush, const BrushEdge& edge) {
-    for (uint32_t s = 0; s < brush.num_surfaces; ++s) {
-        if (!is_sky(brush, brush.surfaces[s])) continue;
-        const std::vector<glm::vec3> outline = surface_outline(brush, s);
-        if (on_outline(outline, edge.v0) && on_outline(outline, edge.v1) &&
-            on_outline(outline, (edge.v0 + edge.v1) * 0.5f)) {
-            return true;
-        }
-    }
-    return false;
-}
-
 // Polygon sides that make edges: distinct vertex ids, some length.
 uint32_t count_sides(const nqr_brush_model& brush, uint32_t surface, float* perimeter) {
     const nqr_surface& s = brush.surfaces[surface];
@@ -520,6 +575,171 @@ std::vector<uint32_t> model_of_surfaces(const nq::Bsp& bsp) {
     return model;
 }
 
+// Which connected piece each surface belongs to: surfaces that own edges (not sky) joined
+// through shared vertex ids.
+std::vector<uint32_t> piece_of_surfaces(const nqr_brush_model& brush) {
+    if (brush.num_vertices == 0) return std::vector<uint32_t>(brush.num_surfaces, 0);
+    std::vector<uint32_t> parent(
+        *std::max_element(brush.vertex_ids, brush.vertex_ids + brush.num_vertices) + 1);
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto root = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (uint32_t s = 0; s < brush.num_surfaces; ++s) {
+        const nqr_surface& surface = brush.surfaces[s];
+        if (is_sky(brush, surface)) continue;
+        for (uint32_t i = 1; i < surface.num_vertices; ++i) {
+            parent[root(brush.vertex_ids[surface.first_vertex + i])] =
+                root(brush.vertex_ids[surface.first_vertex]);
+        }
+    }
+    std::vector<uint32_t> piece(brush.num_surfaces);
+    for (uint32_t s = 0; s < brush.num_surfaces; ++s) {
+        piece[s] = root(brush.vertex_ids[brush.surfaces[s].first_vertex]);
+    }
+    return piece;
+}
+
+// A map's surfaces as this file sees them, with a coarse grid to find the ones near a point.
+class MapSurfaces {
+  public:
+    struct Surface {
+        std::vector<glm::vec3> outline;
+        glm::vec3 normal{0.0f}, centroid{0.0f}, lo{0.0f}, hi{0.0f};
+        float dist = 0.0f;
+        uint32_t model = 0, piece = 0;
+        bool sky = false;
+    };
+
+    MapSurfaces(const nqr_brush_model& brush, const nq::Bsp& bsp) {
+        const std::vector<uint32_t> model = model_of_surfaces(bsp);
+        const std::vector<uint32_t> piece = piece_of_surfaces(brush);
+        for (uint32_t s = 0; s < brush.num_surfaces; ++s) {
+            Surface out;
+            out.outline = surface_outline(brush, s);
+            out.normal = glm::make_vec3(brush.surfaces[s].normal);  // the map's plane
+            out.dist = brush.surfaces[s].dist;
+            out.lo = out.hi = out.outline[0];
+            for (const glm::vec3& p : out.outline) {
+                out.centroid += p / static_cast<float>(out.outline.size());
+                out.lo = glm::min(out.lo, p);
+                out.hi = glm::max(out.hi, p);
+            }
+            out.model = model[s];
+            out.piece = piece[s];
+            out.sky = is_sky(brush, brush.surfaces[s]);
+            const glm::ivec3 first = cell(out.lo - kPointTolerance);
+            const glm::ivec3 last = cell(out.hi + kPointTolerance);
+            for (int x = first.x; x <= last.x; ++x) {
+                for (int y = first.y; y <= last.y; ++y) {
+                    for (int z = first.z; z <= last.z; ++z) grid_[key({x, y, z})].push_back(s);
+                }
+            }
+            surfaces_.push_back(std::move(out));
+        }
+    }
+
+    const Surface& operator[](uint32_t s) const { return surfaces_[s]; }
+
+    // Surfaces whose box, grown by the tolerance, may hold p.
+    const std::vector<uint32_t>& near(glm::vec3 p) const {
+        static const std::vector<uint32_t> kNone;
+        const auto found = grid_.find(key(cell(p)));
+        return found == grid_.end() ? kNone : found->second;
+    }
+
+  private:
+    static constexpr float kCell = 128.0f;
+    static glm::ivec3 cell(glm::vec3 p) { return glm::ivec3(glm::floor(p / kCell)); }
+    static uint64_t key(glm::ivec3 c) {
+        return (uint64_t(uint32_t(c.x) & 0xfffff) << 40) |
+               (uint64_t(uint32_t(c.y) & 0xfffff) << 20) | uint64_t(uint32_t(c.z) & 0xfffff);
+    }
+
+    std::vector<Surface> surfaces_;
+    std::unordered_map<uint64_t, std::vector<uint32_t>> grid_;
+};
+
+// Whether p lies in the surface's polygon (its plane and inside its sides, within the tolerance).
+bool in_polygon(const MapSurfaces::Surface& s, glm::vec3 p) {
+    if (std::abs(glm::dot(s.normal, p) - s.dist) > kPointTolerance) return false;
+    for (size_t i = 0; i < s.outline.size(); ++i) {
+        const glm::vec3 a = s.outline[i], b = s.outline[(i + 1) % s.outline.size()];
+        const glm::vec3 across = glm::cross(s.normal, b - a);  // into the polygon (CCW)
+        if (glm::length(across) <= 1e-4f) continue;
+        if (glm::dot(p - a, glm::normalize(across)) < -kPointTolerance) return false;
+    }
+    return true;
+}
+
+// The segment runs along the surface's outline, or across its polygon.
+bool holds_segment(const MapSurfaces::Surface& s, glm::vec3 p, glm::vec3 q) {
+    const glm::vec3 mid = (p + q) * 0.5f;
+    if (on_outline(s.outline, p) && on_outline(s.outline, q) && on_outline(s.outline, mid)) {
+        return true;
+    }
+    return in_polygon(s, p) && in_polygon(s, q);
+}
+
+// Why a boundary edge of the world or a brush entity has one face only, from the map's own data
+// at the edge's midpoint (surfaces hold a point when it lies on their outline or inside their
+// polygon; a piece is what shares vertex ids), in this order:
+//   sky          a sky surface (which owns no edges) holds it;
+//   several      another face of its piece has a side along it in its direction, and the sides
+//                along it in that direction outnumber those against it (several faces meet
+//                there: a wall with faces into water and into air, say): one is left without a
+//                partner whatever the pairing;
+//   other_piece  a surface of another model (a door, a trigger) or of another piece of its
+//                model (a detail sharing no vertex with it) holds it: pieces never join;
+//   buried       the space in front of its face next to it is solid (hull 0 point contents);
+//   nothing      no other surface of its model holds it: the map has no face there;
+//   unexplained  none of these, or a face of its piece has it inside (not along a side, not in
+//                the edge's own plane): a partner the matcher should have found.
+enum class OpenReason { sky, several, other_piece, buried, nothing, unexplained };
+
+OpenReason why_open(const MapSurfaces& map, const nq::Bsp& bsp, const BrushEdge& edge) {
+    const glm::vec3 mid = (edge.v0 + edge.v1) * 0.5f;
+    const glm::vec3 along = glm::normalize(edge.v1 - edge.v0);
+    const MapSurfaces::Surface& owner = map[edge.face0];
+    bool sky = false, other_piece = false, same_model = false, inside_own_piece = false;
+    int one_way = 1, other_way = 0;  // its own side runs one way
+    for (const uint32_t s : map.near(mid)) {
+        const MapSurfaces::Surface& surface = map[s];
+        if (s == edge.face0) continue;
+        const bool on_side = on_outline(surface.outline, mid);
+        if (!on_side && !in_polygon(surface, mid)) continue;
+        const bool same_piece = surface.model == owner.model && surface.piece == owner.piece;
+        sky |= surface.sky;
+        other_piece |= !surface.sky && !same_piece;
+        same_model |= !surface.sky && surface.model == owner.model;
+        if (surface.sky || !same_piece) continue;
+        inside_own_piece |=
+            !on_side && glm::length(glm::cross(surface.normal, owner.normal)) > 1e-3f;
+        for (size_t i = 0; i < surface.outline.size(); ++i) {
+            const glm::vec3 a = surface.outline[i];
+            const glm::vec3 b = surface.outline[(i + 1) % surface.outline.size()];
+            if (glm::length(b - a) <= 0.1f || distance_to_segment(mid, a, b) > kPointTolerance) {
+                continue;
+            }
+            const float cosine = glm::dot(glm::normalize(b - a), along);
+            if (cosine > 0.9999f) ++one_way;
+            if (cosine < -0.9999f) ++other_way;
+        }
+    }
+    if (inside_own_piece) return OpenReason::unexplained;
+    if (sky) return OpenReason::sky;
+    if (one_way > 1 && one_way > other_way) return OpenReason::several;
+    if (other_piece) return OpenReason::other_piece;
+    const glm::vec3 into = glm::cross(owner.normal, along);  // into the face (CCW)
+    const glm::vec3 in_front = mid + owner.normal + into;
+    if (nq::point_contents(bsp, 0, {in_front.x, in_front.y, in_front.z}, owner.model) ==
+        nq::bsp_contents::solid) {
+        return OpenReason::buried;
+    }
+    return same_model ? OpenReason::unexplained : OpenReason::nothing;
+}
+
 void check_map_invariants(const LoadedMap& map, double* shared_share) {
     SCOPED_TRACE(map.name);
     const nqr_brush_model& brush = map.data->abi();
@@ -539,47 +759,83 @@ void check_map_invariants(const LoadedMap& map, double* shared_share) {
     EXPECT_EQ(stats.surfaces, owners);
     EXPECT_EQ(stats.half_edges, sides);
     EXPECT_EQ(2 * stats.shared_edges + stats.unmatched_half_edges, stats.half_edges);
-    EXPECT_EQ(stats.shared_edges + stats.t_junction_edges + stats.boundary_edges, stats.edges);
+    EXPECT_EQ(stats.shared_edges + stats.t_junction_edges + stats.inside_face_edges +
+                  stats.boundary_edges,
+              stats.edges);
     ASSERT_EQ(table.edges().size(), stats.edges);
 
-    // Each edge lies on the outline of its faces, within one model; together the edges of a
-    // surface cover its outline once.
-    const std::vector<uint32_t> model = model_of_surfaces(map.data->bsp());
+    // Each edge lies on the outline of one of its faces, within one model; the other face holds
+    // it on its outline too, or across its polygon (a side ending on the inside of a face).
+    // Together the edges on a surface's outline cover it once. The dihedral angle is the angle
+    // between the faces' normals, a valley where each face lies in front of the other's plane.
+    const MapSurfaces surfaces(brush, map.data->bsp());
     std::vector<float> covered(brush.num_surfaces, 0.0f);
-    int off_outline = 0, across_models = 0;
+    int off_faces = 0, across_models = 0, inside = 0, wrong_angle = 0, wrong_sign = 0;
     for (const BrushEdge& e : table.edges()) {
         const float length = glm::length(e.v1 - e.v0);
-        for (uint32_t face : {e.face0, e.face1}) {
+        const glm::vec3 mid = (e.v0 + e.v1) * 0.5f;
+        uint32_t on_outline_of = technical::kNoFace;
+        for (uint32_t face : {e.face1, e.face0}) {
             if (face == technical::kNoFace) continue;
-            const std::vector<glm::vec3> outline = surface_outline(brush, face);
-            if (!on_outline(outline, e.v0) || !on_outline(outline, e.v1)) ++off_outline;
-            covered[face] += length;
+            const MapSurfaces::Surface& s = surfaces[face];
+            if (on_outline(s.outline, e.v0) && on_outline(s.outline, e.v1) &&
+                on_outline(s.outline, mid)) {
+                covered[face] += length;
+                on_outline_of = face;
+            }
         }
-        if (!e.is_boundary() && model[e.face0] != model[e.face1]) ++across_models;
         EXPECT_LE(std::abs(e.dihedral_degrees), 180.0f);
+        if (on_outline_of == technical::kNoFace) {
+            ++off_faces;
+            continue;
+        }
+        if (e.is_boundary()) continue;
+        const uint32_t other = on_outline_of == e.face0 ? e.face1 : e.face0;
+        const MapSurfaces::Surface& side = surfaces[on_outline_of];
+        const MapSurfaces::Surface& across = surfaces[other];
+        if (!on_outline(across.outline, mid)) {
+            ++inside;
+            if (!holds_segment(across, e.v0, e.v1)) ++off_faces;
+        }
+        if (side.model != across.model) ++across_models;
+        const float between =
+            glm::degrees(std::acos(std::clamp(glm::dot(side.normal, across.normal), -1.0f, 1.0f)));
+        if (std::abs(std::abs(e.dihedral_degrees) - between) > 0.1f) ++wrong_angle;
+        const float height = glm::dot(across.normal, side.centroid) - across.dist;
+        if (std::abs(e.dihedral_degrees) > 1.0f && std::abs(e.dihedral_degrees) < 179.0f &&
+            std::abs(height) > 0.01f && (e.dihedral_degrees < 0.0f) != (height > 0.0f)) {
+            ++wrong_sign;
+        }
     }
-    EXPECT_EQ(off_outline, 0);
+    EXPECT_EQ(off_faces, 0);
     EXPECT_EQ(across_models, 0);
+    EXPECT_EQ(inside, static_cast<int>(stats.inside_face_edges));
+    EXPECT_EQ(wrong_angle, 0);
+    EXPECT_EQ(wrong_sign, 0);
     int badly_covered = 0;
     for (uint32_t s = 0; s < brush.num_surfaces; ++s) {
         if (std::abs(covered[s] - perimeter[s]) > 0.5f) ++badly_covered;
     }
     EXPECT_EQ(badly_covered, 0);
 
-    // In these maps the only open sides are where walls meet sky (which owns no edges).
-    int boundary_off_sky = 0;
+    // Every boundary edge is open for a reason the map's data shows.
+    std::array<int, 6> open{};
     for (const BrushEdge& e : table.edges()) {
-        if (e.is_boundary() && !along_sky(brush, e)) ++boundary_off_sky;
+        if (!e.is_boundary()) continue;
+        ++open[static_cast<size_t>(why_open(surfaces, map.data->bsp(), e))];
     }
-    EXPECT_EQ(boundary_off_sky, 0);
+    EXPECT_EQ(open[static_cast<size_t>(OpenReason::unexplained)], 0);
 
-    *shared_share = static_cast<double>(stats.shared_edges + stats.t_junction_edges) /
+    *shared_share = static_cast<double>(stats.edges - stats.boundary_edges) /
                     std::max<uint32_t>(stats.edges, 1);
     std::cout << "[ brush edges ] " << map.name << ": surfaces " << stats.surfaces
               << ", half-edges " << stats.half_edges << ", edges " << stats.edges << " (shared "
-              << stats.shared_edges << ", T-junction " << stats.t_junction_edges << ", boundary "
-              << stats.boundary_edges << "), creases " << stats.creases << ", shared share "
-              << *shared_share << ", built in " << build_ms << " ms\n";
+              << stats.shared_edges << ", T-junction " << stats.t_junction_edges
+              << ", inside a face " << stats.inside_face_edges << ", boundary "
+              << stats.boundary_edges << ": sky " << open[0] << ", several faces " << open[1]
+              << ", other piece " << open[2] << ", buried " << open[3] << ", nothing there "
+              << open[4] << ", unexplained " << open[5] << "), creases " << stats.creases
+              << ", shared share " << *shared_share << ", built in " << build_ms << " ms\n";
 }
 
 TEST(BrushEdgeRealDataTest, EveryMapKeepsTheInvariantsAndStartIsMostlyShared) {
