@@ -1,5 +1,6 @@
 #include "app/demo_session.h"
 
+#include "common/file_io.h"
 #include "fs/vfs.h"
 
 namespace nq {
@@ -16,19 +17,36 @@ ModelCache::FileReader vfs_reader(const Vfs* vfs) {
 }  // namespace
 
 DemoSession::DemoSession(const Vfs* vfs, DemoSessionCallbacks callbacks)
-    : vfs_(vfs), callbacks_(std::move(callbacks)), level_(vfs_reader(vfs)),
+    : vfs_(vfs),
+      callbacks_(std::move(callbacks)),
+      level_(vfs_reader(vfs)),
       client_(std::make_unique<ClientState>()) {}
 
-DemoSession::~DemoSession() { stop(); }
+DemoSession::~DemoSession() {
+    stop();
+}
 
 std::string DemoSession::start(const std::string& name, DemoMode mode) {
     stop();
     if (!vfs_) return "no game data: cannot play demos (see -basedir and -game)";
     std::string path = name;
-    if (!vfs_->exists(path)) path = name + ".dem";
-    auto bytes = vfs_->read(path);
-    if (!bytes) return "cannot play demo \"" + name + "\": " + bytes.error().message;
-    auto player = DemoPlayer::open(bytes.value(), path, mode);
+    std::optional<std::vector<uint8_t>> bytes;
+    if (!user_dir_.empty() && name.find("..") == std::string::npos) {
+        for (const std::string& candidate : {name, name + ".dem"}) {
+            auto file = read_file(user_dir_ + "/" + candidate);
+            if (!file) continue;
+            bytes = std::move(file.value());
+            path = candidate;
+            break;
+        }
+    }
+    if (!bytes) {
+        if (!vfs_->exists(path)) path = name + ".dem";
+        auto read = vfs_->read(path);
+        if (!read) return "cannot play demo \"" + name + "\": " + read.error().message;
+        bytes = std::move(read.value());
+    }
+    auto player = DemoPlayer::open(*bytes, path, mode);
     if (!player) return player.error().to_string();
     client_ = std::make_unique<ClientState>();
     player_.emplace(std::move(player.value()));
@@ -40,30 +58,47 @@ std::string DemoSession::start(const std::string& name, DemoMode mode) {
     return {};
 }
 
-void DemoSession::stop() {
-    if (!player_ && !level_.loaded()) return;
-    if (level_.loaded() && callbacks_.level_unloading) callbacks_.level_unloading();
-    level_.clear();
-    player_.reset();
+void DemoSession::start_game(std::unique_ptr<LiveGame> game, const std::string& map) {
+    stop();
+    client_ = std::make_unique<ClientState>();
+    live_ = std::move(game);
+    name_ = map;
+    mode_ = DemoMode::Playback;
+    generation_ = 0;
     paused_ = false;
 }
 
-FrameStatus DemoSession::frame(double frame_time) {
-    if (!player_) return FrameStatus::Ended;
+void DemoSession::stop() {
+    if (!player_ && !live_ && !level_.loaded()) return;
+    if (level_.loaded() && callbacks_.level_unloading) callbacks_.level_unloading();
+    level_.clear();
+    player_.reset();
+    live_.reset();
+    paused_ = false;
+}
+
+FrameStatus DemoSession::frame(double frame_time, const MoveCommand* cmd) {
+    if (!player_ && !live_) return FrameStatus::Ended;
     if (paused_) {
         // No time passes (old time = time): the view and the scene see a still instant.
         client_->advance_clock(0);
         return FrameStatus::Playing;
     }
-    FrameStatus status = player_->read_frame(*client_, frame_time);
+    const MoveCommand no_input;
+    FrameStatus status = live_ ? live_->run_frame(*client_, frame_time, cmd ? *cmd : no_input)
+                               : player_->read_frame(*client_, frame_time);
     if (client_->generation() != generation_) {
         generation_ = client_->generation();
         on_new_level();
     }
-    if (status == FrameStatus::Playing) client_->prepare_frame(player_->lerp_mode());
+    if (status == FrameStatus::Playing) {
+        client_->prepare_frame(live_ ? LerpMode::Interpolate : player_->lerp_mode());
+    }
     drain_client_text();
-    if (status == FrameStatus::Ended && player_->error()) {
-        callbacks_.print("demo stopped: " + player_->error()->to_string());
+    if (status == FrameStatus::Ended) {
+        const std::optional<Error>& error = live_ ? live_->error() : player_->error();
+        if (error)
+            callbacks_.print((live_ ? "game stopped: " : "demo stopped: ") + error->to_string());
     }
     return status;
 }
@@ -80,7 +115,15 @@ void DemoSession::on_new_level() {
 }
 
 void DemoSession::drain_client_text() {
-    for (const auto& text : client_->take_console_text()) callbacks_.print(text);
+    // svc_print pieces make lines together ("player" + " entered the game\n"): print whole
+    // lines only.
+    for (const auto& text : client_->take_console_text()) {
+        console_line_ += text;
+        for (size_t end; (end = console_line_.find('\n')) != std::string::npos;) {
+            callbacks_.print(std::string_view(console_line_).substr(0, end));
+            console_line_.erase(0, end + 1);
+        }
+    }
     for (const auto& text : client_->take_center_prints()) {
         if (callbacks_.center_print) callbacks_.center_print(text);
     }

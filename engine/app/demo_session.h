@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/level.h"
+#include "app/live_game.h"
 #include "client/demo_player.h"
 
 namespace nq {
@@ -16,22 +17,29 @@ namespace nq {
 class Vfs;
 
 struct DemoSessionCallbacks {
-    std::function<void()> level_unloading;           // models are about to be freed
-    std::function<void(Level&)> level_loaded;         // register the new models
-    std::function<void(std::string_view)> print;      // console text, warnings
+    std::function<void()> level_unloading;        // models are about to be freed
+    std::function<void(Level&)> level_loaded;     // register the new models
+    std::function<void(std::string_view)> print;  // console text, warnings
     std::function<void(std::string_view)> center_print;
     std::function<void(std::string_view)> stuff_text;  // commands the server sent
 };
 
 class DemoSession {
-public:
+  public:
     DemoSession(const Vfs* vfs, DemoSessionCallbacks callbacks);
     ~DemoSession();
 
-    // Opens "<name>" or "<name>.dem" through the VFS; "" on success, else the reason.
+    // Where recorded demos are written (<userdir>/<game>): searched before the game data.
+    void set_user_dir(std::string dir) { user_dir_ = std::move(dir); }
+    // Opens "<name>" or "<name>.dem" from the user dir or through the VFS; "" on success,
+    // else the reason.
     std::string start(const std::string& name, DemoMode mode);
+    // Plays the game instead: `game` has just started a level; its messages feed the client
+    // the way a demo's blocks do. The session keeps `game` until stop().
+    void start_game(std::unique_ptr<LiveGame> game, const std::string& map);
     void stop();
-    bool active() const { return player_.has_value(); }
+    bool active() const { return player_.has_value() || live_ != nullptr; }
+    LiveGame* live() { return live_.get(); }
 
     // A paused demo reads nothing and its clock stands still, so the same instant is drawn
     // again and again. Only a playing demo can be paused; starting or stopping one unpauses.
@@ -40,7 +48,8 @@ public:
 
     // Plays one host frame (or, paused, holds the current one); returns Ended when the demo
     // finished (or failed) in it.
-    FrameStatus frame(double frame_time);
+    // In a game, `cmd` is the player's command for the frame (required then).
+    FrameStatus frame(double frame_time, const MoveCommand* cmd = nullptr);
 
     const std::string& name() const { return name_; }
     DemoMode mode() const { return mode_; }
@@ -49,7 +58,7 @@ public:
     const DemoPlayer* player() const { return player_ ? &*player_ : nullptr; }
     bool level_ready() const { return level_.loaded() && client_ && client_->signed_on(); }
 
-private:
+  private:
     void on_new_level();
     void drain_client_text();
 
@@ -58,10 +67,13 @@ private:
     Level level_;
     std::unique_ptr<ClientState> client_;
     std::optional<DemoPlayer> player_;
+    std::unique_ptr<LiveGame> live_;
     std::string name_;
     DemoMode mode_ = DemoMode::Playback;
     uint32_t generation_ = 0;
     bool paused_ = false;
+    std::string console_line_;  // printed text not yet ended by a newline
+    std::string user_dir_;
 };
 
 }  // namespace nq

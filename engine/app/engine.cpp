@@ -40,6 +40,7 @@ Engine::Engine(const CommandLine& command_line)
 }
 
 Engine::~Engine() {
+    stop_recording();
     demo_.reset();
     dispatch_.reset();
     plugins_.reset();
@@ -95,6 +96,13 @@ bool Engine::start() {
         {"r_occlusion", "1", kCvarArchive,
          "1: models the world hides completely are flagged so plugins skip them (0: off)", 0.0f,
          1.0f});
+    cvars_.host_framerate = host_.cvars().register_cvar(
+        {"host_framerate", "0", 0,
+         "fixed seconds per frame for the game and demos (0 = real time); scripted, "
+         "deterministic runs use 1/72 = 0.0138889",
+         0.0f, 1.0f});
+    register_game_cvars();
+    input_ = std::make_unique<PlayerInput>(host_.commands());
     cvars_.gamma = host_.cvars().register_cvar(
         {"gamma", "1", kCvarArchive,
          "brightness: each colour becomes colour^gamma (below 1 brighter; 1 costs nothing)", 0.3f,
@@ -166,10 +174,16 @@ bool Engine::start() {
     callbacks.print = [this](std::string_view t) { print(t); };
     callbacks.center_print = [this](std::string_view t) { console_->center_print(t); };
     // Commands inside demos are shown, not run: a downloaded demo must not drive the console.
-    callbacks.stuff_text = [](std::string_view) {};
+    // Our own game's server is trusted (QuakeC's stuffcmd: bonus flashes, cvars).
+    callbacks.stuff_text = [this](std::string_view text) {
+        if (demo_ && demo_->live()) host_.commands().add_text(text);
+    };
     callbacks.level_unloading = [this] { release_level_models(); };
     callbacks.level_loaded = [this](Level& level) { register_level_models(level); };
     demo_ = std::make_unique<DemoSession>(vfs_ ? &*vfs_ : nullptr, std::move(callbacks));
+    demo_->set_user_dir(user_dir() + "/" + options_.game.value_or("id1"));
+    server_host_ = std::make_unique<EngineServerHost>(host_, vfs_ ? &*vfs_ : nullptr,
+                                                      [this](std::string_view t) { print(t); });
 
     register_commands();
     host_.set_file_reader([this](const std::string& path) -> std::optional<std::string> {
@@ -254,13 +268,20 @@ void Engine::frame() {
     double now = seconds();
     double frame_time = now - last_frame_seconds_;
     last_frame_seconds_ = now;
+    if (cvars_.host_framerate->value() > 0) frame_time = cvars_.host_framerate->value();
     handle_events();
     host_.commands().execute();
     console_->update(now - start_seconds_);
     // A paused demo draws the same instant again: timedemo does not count those frames.
     bool timing = demo_->active() && demo_->mode() == DemoMode::TimeDemo && !demo_->paused();
+    const bool game_timing = demo_->live() && !demo_->paused();
     if (demo_->active()) {
-        FrameStatus status = demo_->frame(frame_time);
+        FrameStatus status = FrameStatus::Playing;
+        if (demo_->live()) {
+            run_game_frame(frame_time, status);
+        } else {
+            status = demo_->frame(frame_time);
+        }
         run_demo_schedule();
         if (status == FrameStatus::Ended) {
             end_demo();
@@ -272,7 +293,14 @@ void Engine::frame() {
         first_frame_seconds_ = seconds() - start_seconds_;
         print("start-up to first frame: " + std::to_string(first_frame_seconds_) + " s");
     }
+    if (map_started_seconds_ >= 0 && demo_->level_ready()) {
+        const double ms = (seconds() - map_started_seconds_) * 1000;
+        print("map " + demo_->name() + ": first frame " + std::to_string(int(ms)) +
+              " ms after the map command");
+        map_started_seconds_ = -1;
+    }
     if (timing) frame_times_.record(seconds() - now);
+    if (game_timing) game_frame_times_.record(seconds() - now);
     ++frame_count_;
     if (!timing && cvars_.host_maxfps->value() > 0) {
         double budget = 1.0 / cvars_.host_maxfps->value() - (seconds() - now);
@@ -300,9 +328,17 @@ void Engine::handle_events() {
         if (event.type == InputEventType::Resize) {
             console_->set_screen_size(window_->drawable_width(), window_->drawable_height());
         }
+        const bool playing = demo_->live() && !console_->is_open();
+        if (event.type == InputEventType::MouseMotion && playing) {
+            input_->add_mouse(float(event.dx), float(event.dy));
+        }
+        if (event.type == InputEventType::FocusLost) input_->release_all();
         console_->handle_event(event);
     }
     window_->set_text_input(console_->is_open());
+    const bool relative = demo_->live() && !console_->is_open();
+    if (relative != relative_mouse_) window_->set_relative_mouse(relative);
+    relative_mouse_ = relative;
 }
 
 CameraSetup Engine::camera_for(const ViewResult& view) const {

@@ -14,11 +14,13 @@
 #include <vector>
 
 #include "app/demo_session.h"
+#include "app/engine_server_host.h"
 #include "app/game_data.h"
 #include "app/host_services.h"
 #include "app/render_dispatch.h"
 #include "app/scene_builder.h"
 #include "app/showroom.h"
+#include "client/player_input.h"
 #include "client/view.h"
 #include "console/console.h"
 #include "console/console_drawer.h"
@@ -44,6 +46,24 @@ struct EngineCvars {
     Cvar* viewmodel_quake = nullptr;
     Cvar* occlusion = nullptr;
     Cvar* gamma = nullptr;
+    Cvar* host_framerate = nullptr;
+};
+
+// The game's cvars (Quake's names and defaults), read when a level starts or each frame.
+struct GameCvars {
+    Cvar* skill = nullptr;
+    Cvar* deathmatch = nullptr;
+    Cvar* coop = nullptr;
+    Cvar* sv_protocol = nullptr;
+    Cvar* sv_gravity = nullptr;
+    Cvar* sv_maxspeed = nullptr;
+    Cvar* sv_friction = nullptr;
+    Cvar* sv_edgefriction = nullptr;
+    Cvar* sv_stopspeed = nullptr;
+    Cvar* sv_accelerate = nullptr;
+    Cvar* sv_maxvelocity = nullptr;
+    Cvar* sv_nostep = nullptr;
+    Cvar* sv_seed = nullptr;
 };
 
 class Engine {
@@ -84,6 +104,18 @@ class Engine {
     void release_level_models();
     void show_showroom(bool on);
 
+    // game_commands.cpp
+    void register_game_cvars();
+    void register_game_commands();
+    void register_save_commands();  // save_commands.cpp
+    void start_map(const std::string& map, bool keep_parms);
+    void change_level_if_asked();
+    void run_game_frame(double frame_time, FrameStatus& status);
+    void start_recording(const CommandArgs& args);
+    bool stop_recording();
+    server::ServerSettings server_settings() const;
+    server::ServerLevel* game_level();
+
     // engine_commands.cpp
     void register_commands();
     void start_demo(const std::string& name, DemoMode mode);
@@ -110,6 +142,9 @@ class Engine {
     std::unique_ptr<PluginHost> plugins_;
     std::unique_ptr<RenderDispatch> dispatch_;
     std::unique_ptr<DemoSession> demo_;
+    std::unique_ptr<PlayerInput> input_;
+    std::unique_ptr<EngineServerHost> server_host_;
+    GameCvars game_cvars_;
     SceneBuilder scene_;
     ViewState view_state_;
     std::unique_ptr<Showroom> showroom_;
@@ -118,6 +153,7 @@ class Engine {
 
     // Timedemo: per-frame times, and the command text that waits for the demo to end.
     FrameTimeRecorder frame_times_;
+    FrameTimeRecorder game_frame_times_{size_t{1} << 16};  // host frames of the running game
     std::string after_demo_text_;
     std::vector<std::pair<uint64_t, std::string>> demo_schedule_;  // demo_at FRAME "commands"
     double start_seconds_ = 0;
@@ -126,6 +162,9 @@ class Engine {
     double demo_real_time_ = 0;        // wall clock of the demo frame drawn last (for pause)
     uint64_t frame_count_ = 0;
     bool quit_ = false;
+    bool relative_mouse_ = false;
+    double map_started_seconds_ = -1;  // `map` ran: report the time to its first frame       // the
+                                       // mouse turns the view (a game runs, console closed)
     bool multisampled_screen_ = false;  // occlusion culling is then off
     int exit_status_ = 0;
 };

@@ -23,7 +23,8 @@ std::string format(const char* fmt, double a, double b = 0, double c = 0, double
 
 void Engine::register_commands() {
     CommandSystem& c = host_.commands();
-    c.add_command("quit", [this](const CommandArgs&) { quit_ = true; }, "leave the engine");
+    c.add_command(
+        "quit", [this](const CommandArgs&) { quit_ = true; }, "leave the engine");
     c.add_command(
         "playdemo",
         [this](const CommandArgs& a) {
@@ -39,7 +40,11 @@ void Engine::register_commands() {
         },
         "play a demo as fast as possible and report the frame rate");
     c.add_command(
-        "stop", [this](const CommandArgs&) { end_demo(); }, "stop the demo being played");
+        "stop",
+        [this](const CommandArgs&) {
+            if (!stop_recording()) end_demo();
+        },
+        "stop recording a demo (or, when none is recorded, the demo being played)");
     c.add_command(
         "pause", [this](const CommandArgs& a) { pause_demo(a); },
         "freeze the demo being played (pause [0|1]; no argument toggles)");
@@ -87,6 +92,7 @@ void Engine::register_commands() {
             for (const auto& p : vfs_->search_paths()) print(p.describe());
         },
         "show the search path");
+    register_game_commands();
 }
 
 void Engine::swap_plugin(const std::string& name) {

@@ -1,5 +1,7 @@
 #include "server/entity_spawner.h"
 
+#include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 
@@ -70,37 +72,67 @@ float leading_float(std::string_view text) {
     return result.ec == std::errc() ? value : 0.0f;
 }
 
-bool assign_field(vm::Vm& vm, uint32_t edict, std::string_view key, std::string_view value) {
-    const vm::Def* def = vm.progs().find_field(key);
-    if (!def) return false;
-    const uint32_t ofs = def->offset;
-    switch (def->def_type()) {
+namespace {
+
+// A value as the words its definition's type stores (none for types a map or save cannot set).
+struct Words {
+    std::array<uint32_t, 3> w{};
+    uint32_t count = 0;
+};
+
+Words parse_value(vm::Vm& vm, vm::DefType type, std::string_view value) {
+    auto word = [](float f) { return std::bit_cast<uint32_t>(f); };
+    switch (type) {
         case vm::DefType::string:
-            vm.set_field_int(edict, ofs, vm.strings().make_level(unescape(value)));
-            break;
+            return {{uint32_t(vm.strings().make_level(unescape(value)))}, 1};
         case vm::DefType::float_:
-            vm.set_field_float(edict, ofs, leading_float(value));
-            break;
-        case vm::DefType::vector:
-            vm.set_field_vector(edict, ofs, leading_vector(value));
-            break;
+            return {{word(leading_float(value))}, 1};
+        case vm::DefType::vector: {
+            const vm::Vec3f v = leading_vector(value);
+            return {{word(v[0]), word(v[1]), word(v[2])}, 3};
+        }
         case vm::DefType::entity: {
             const float n = leading_float(value);
             const uint32_t e = n >= 0 && n < float(vm.max_edicts()) ? uint32_t(n) : 0;
-            vm.set_field_int(edict, ofs, int32_t(vm.entity_value(e)));
-            break;
+            return {{vm.entity_value(e)}, 1};
         }
         case vm::DefType::field: {
             const vm::Def* field = vm.progs().find_field(value);
-            vm.set_field_int(edict, ofs, field ? field->offset : 0);
-            break;
+            return {{field ? field->offset : 0u}, 1};
         }
         case vm::DefType::function:
-            vm.set_field_int(edict, ofs, vm.progs().find_function(value));
-            break;
+            return {{uint32_t(vm.progs().find_function(value))}, 1};
         default:
-            break;
+            return {};
     }
+}
+
+}  // namespace
+
+bool assign_field(vm::Vm& vm, uint32_t edict, std::string_view key, std::string_view value) {
+    const vm::Def* def = vm.progs().find_field(key);
+    if (!def) return false;
+    const Words v = parse_value(vm, def->def_type(), value);
+    for (uint32_t i = 0; i < v.count; ++i) {
+        vm.set_field_int(edict, def->offset + i, int32_t(v.w[i]));
+    }
+    return true;
+}
+
+const vm::Def* find_saved_global(const vm::Progs& progs, std::string_view name) {
+    const vm::Def* def = nullptr;
+    for (const vm::Def& d : progs.global_defs) {
+        if (progs.string_at(d.name) != name) continue;
+        if (!def || (d.saved() && !def->saved())) def = &d;
+    }
+    return def;
+}
+
+bool assign_global(vm::Vm& vm, std::string_view key, std::string_view value) {
+    const vm::Def* def = find_saved_global(vm.progs(), key);
+    if (!def) return false;
+    const Words v = parse_value(vm, def->def_type(), value);
+    for (uint32_t i = 0; i < v.count; ++i) vm.set_global_word(def->offset + i, v.w[i]);
     return true;
 }
 

@@ -34,6 +34,12 @@ bool spawn_entities(GameState& game, const EntityList& list, const SpawnSettings
 // "angle" becomes "angles"; keys starting with '_' are editor notes). False when the progs has no
 // such field. Also used by saved games.
 bool assign_field(vm::Vm& vm, uint32_t edict, std::string_view key, std::string_view value);
+// The same for a global (a saved game's globals block, Quake's ED_ParseGlobals), found with
+// find_saved_global. False when the progs has no such global.
+bool assign_global(vm::Vm& vm, std::string_view key, std::string_view value);
+// The global definition named `name`. A function's local may share the name of a global (both
+// are in the global definitions): the one marked for saving wins. Null when there is none.
+const vm::Def* find_saved_global(const vm::Progs& progs, std::string_view name);
 
 // Quake's atof: the leading number of `text` (0 when there is none).
 float leading_float(std::string_view text);

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# The game's own costs, headless, with scripted sessions of ordinary console commands:
+#   1. server frame time (physics + QuakeC + messages) on e2m3 with its monsters awake and
+#      hunting the player (god mode; the player flies through the level firing rockets):
+#      median and 99th percentile from `serverprofile`, and how many monsters hunt the player;
+#   2. level load: `map e2m3` to its first drawn frame with `classic` (median of the runs);
+#   3. playing lq1m1 against a timedemo of a recording of the same session: the game's host
+#      frames (`gamestats`) and the timedemo's, interleaved (play, replay, play, replay...).
+# Every session runs at host_framerate 1/72: one server frame per host frame, as a timedemo reads
+# one block per frame.
+#
+# usage: demos/bench_game.sh [--runs N] [--res WxH] [--out DIR]
+# env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+data=${NPRQ_DATA:-$root/../shared/data}
+build=${BUILD:-$root/build/release}
+runs=3
+res=640x480
+out=$root/build/bench_game
+while [ $# -gt 0 ]; do
+    case $1 in
+        --runs) runs=$2; shift 2 ;;
+        --res) res=$2; shift 2 ;;
+        --out) out=$2; shift 2 ;;
+        -h|--help) sed -n 2,14p "$0"; exit 0 ;;
+        *) echo "bench_game.sh: unknown option $1" >&2; exit 2 ;;
+    esac
+done
+engine=$build/bin/nprquake
+[ -x "$engine" ] || { echo "bench_game.sh: build first ($engine missing)" >&2; exit 1; }
+[ -d "$data/lq1" ] || { echo "bench_game.sh: no game data at $data/lq1" >&2; exit 1; }
+user=$out/user
+mkdir -p "$user/lq1"
+w=${res%x*}
+h=${res#*x}
+
+waits() { for _ in $(seq "$1"); do echo wait; done; }
+
+# e2m3: fly through the level with rockets; monsters wake and hunt.
+{
+    echo "host_framerate 0.0138889"; echo "host_maxfps 0"; echo "map e2m3"; waits 10
+    echo "god"; echo "noclip"; echo "impulse 9"; echo "impulse 7"; waits 5
+    echo "serverprofile clear"
+    for leg in 1 2 3 4 5 6; do
+        echo "+forward"; echo "+attack"; waits 360; echo "-attack"; echo "-forward"
+        echo "+right"; waits $((20 + leg * 7)); echo "-right"
+    done
+    echo "status"; echo "serverprofile"; echo "quit"
+} > "$user/lq1/bench_e2m3.cfg"
+
+# lq1m1: walk, turn and fire, recorded.
+{
+    echo "host_framerate 0.0138889"; echo "host_maxfps 0"; echo "record bench_lq1m1 lq1m1"; waits 10
+    echo "god"; echo "impulse 9"; echo "gamestats"
+    for leg in 1 2 3 4 5; do
+        echo "+forward"; echo "+attack"; waits 200; echo "-attack"; echo "-forward"
+        echo "+left"; waits $((30 + leg * 11)); echo "-left"
+    done
+    echo "gamestats"; echo "stop"; echo "quit"
+} > "$user/lq1/bench_lq1m1.cfg"
+
+run() {  # args...
+    SDL_VIDEODRIVER=offscreen "$engine" -basedir "$data" -game lq1 -userdir "$user" \
+        -width "$w" -height "$h" -window "$@" 2>&1
+}
+
+summary=$out/summary.md
+{
+    echo "# bench_game.sh $(date -u +%Y-%m-%dT%H:%MZ), $res, $runs runs"
+    echo
+} > "$summary"
+
+echo "== e2m3: server frame time with monsters hunting"
+for i in $(seq "$runs"); do
+    log=$(run +exec bench_e2m3.cfg)
+    prof=$(echo "$log" | grep '^server frames:' | tail -1)
+    hunting=$(echo "$log" | grep -o '[0-9]* hunting the player' | tail -1)
+    load=$(echo "$log" | grep -o 'first frame [0-9]* ms' | head -1)
+    echo "run $i: $prof; $hunting; map e2m3 $load"
+    echo "- e2m3 run $i: $prof; $hunting; $load" >> "$summary"
+done
+
+echo "== lq1m1: playing vs a timedemo of the recording (interleaved)"
+for i in $(seq "$runs"); do
+    log=$(run +exec bench_lq1m1.cfg)
+    play=$(echo "$log" | grep '^game: ' | tail -1)
+    demo=$(run +timedemo bench_lq1m1 +quit | grep -E '^[0-9]+ frames' | tail -1)
+    p_fps=$(echo "$play" | awk '{print $6}')
+    d_fps=$(echo "$demo" | awk '{print $5}')
+    ratio=$(awk -v p="$p_fps" -v d="$d_fps" 'BEGIN { if (p > 0) printf "%.3f", d / p; else print "n/a" }')
+    echo "run $i: playing: ${play#game: }; timedemo: $demo; play/timedemo frame time: $ratio"
+    echo "- lq1m1 run $i: playing ${play#game: }; timedemo $demo; play/timedemo frame time $ratio" >> "$summary"
+done
+echo "summary: $summary"

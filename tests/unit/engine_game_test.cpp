@@ -1,0 +1,142 @@
+// Playing the game through the engine binary, headless, driven by a script of ordinary console
+// commands: a recorded session is a well-formed protocol 666 demo, the same script records the
+// same bytes again (fixed frame time, seeded server), the recording replays in the engine with
+// the frame count Quake's playback rule gives for its blocks, and a missing map is a message,
+// not a crash.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "common/file_io.h"
+#include "engine_output_checks.h"
+#include "formats/dem.h"
+#include "formats/message_decoder.h"
+#include "support/engine_run.h"
+#include "support/test_data.h"
+
+namespace nq {
+namespace {
+
+using namespace test;
+
+// 2 s of walking forward, a turn, a second of running while firing.
+std::string walk_script(const std::string& demo) {
+    std::string s = "host_framerate 0.0138889\nrecord " + demo + " start\n";
+    auto wait = [&](int frames) {
+        for (int i = 0; i < frames; ++i) s += "wait\n";
+    };
+    wait(10);
+    s += "+forward\n";
+    wait(144);
+    s += "-forward\n+right\n";
+    wait(40);
+    s += "-right\n+forward\n+attack\n";
+    wait(72);
+    s += "-forward\n-attack\nstop\nquit\n";
+    return s;
+}
+
+struct Recording {
+    ProcessResult run;
+    std::vector<uint8_t> demo;
+};
+
+Recording record(const TempDir& dir, const std::string& name) {
+    const std::string user = dir.subdir("user_" + name);
+    const std::string game_dir = user + "/lq1";
+    std::filesystem::create_directories(game_dir);
+    std::ofstream(game_dir + "/walk.cfg") << walk_script(name);
+    Recording r;
+    r.run = run_nprquake({"-userdir", user, "-basedir", data_root(), "-game", "lq1", "-width",
+                          "320", "-height", "240", "+exec", "walk.cfg"},
+                         dir.path(), 300);
+    if (auto bytes = read_file(game_dir + "/" + name + ".dem")) r.demo = std::move(*bytes);
+    return r;
+}
+
+// Frames a timedemo reports for `demo`, by Quake's rule: the first frame reads every block up
+// to the first entity update after signon stage 3, and one more; each later frame reads one
+// block; the frame that reads the disconnect is not played, and the first is not counted.
+uint64_t expected_timedemo_frames(const Demo& demo) {
+    protocol::ProtocolState state;
+    bool stage3 = false;
+    size_t first_frame_end = 0;
+    for (size_t i = 0; i < demo.blocks.size() && first_frame_end == 0; ++i) {
+        auto block = decode_server_message(demo.blocks[i].message, {"rec", i, 0}, state);
+        if (!block) return 0;
+        for (const DecodedMessage& m : block->messages) {
+            if (auto* s = std::get_if<svc::SignonNum>(&m.message)) stage3 = s->stage == 3;
+            if (stage3 && std::holds_alternative<svc::EntityUpdate>(m.message)) {
+                first_frame_end = i + 1;
+            }
+        }
+    }
+    if (first_frame_end == 0 || demo.blocks.size() < first_frame_end + 2) return 0;
+    return demo.blocks.size() - first_frame_end - 2;
+}
+
+TEST(EngineGame, ScriptedSessionRecordsAReplayableDeterministicDemo) {
+    TempDir dir("nq_game");
+    const Recording a = record(dir, "walk_a");
+    ASSERT_EQ(a.run.exit_code, 0) << a.run.describe();
+    EXPECT_EQ(sanitizer_report(a.run.err), "");
+    ASSERT_FALSE(a.demo.empty()) << a.run.out;
+
+    // A well-formed demo: every block decodes under protocol 666; the player moved.
+    auto demo = parse_dem(a.demo, "walk_a.dem");
+    ASSERT_TRUE(demo) << demo.error().to_string();
+    protocol::ProtocolState state;
+    std::optional<Vec3> first_origin, last_origin;
+    int disconnects = 0;
+    for (size_t i = 0; i < demo->blocks.size(); ++i) {
+        auto block = decode_server_message(demo->blocks[i].message, {"walk_a.dem", i, 0}, state);
+        ASSERT_TRUE(block) << block.error().to_string();
+        for (const DecodedMessage& m : block->messages) {
+            if (auto* u = std::get_if<svc::EntityUpdate>(&m.message); u && u->entity == 1) {
+                if (!first_origin) first_origin = u->origin;
+                last_origin = u->origin;
+            }
+            disconnects += std::holds_alternative<svc::Disconnect>(m.message);
+        }
+    }
+    EXPECT_EQ(state.protocol, protocol::kFitzQuake);
+    EXPECT_EQ(disconnects, 1);
+    ASSERT_TRUE(first_origin && last_origin);
+    const float moved =
+        std::hypot((*last_origin)[0] - (*first_origin)[0], (*last_origin)[1] - (*first_origin)[1]);
+    EXPECT_GT(moved, 100.0f) << "the player should have walked";
+
+    // Same script, same frame time, same seed: the same bytes.
+    const Recording b = record(dir, "walk_b");
+    ASSERT_EQ(b.run.exit_code, 0) << b.run.describe();
+    EXPECT_EQ(a.demo, b.demo) << "two recordings of one script differ";
+
+    // It replays here with the frame count its blocks give.
+    const std::string user = dir.path() + "/user_walk_a";
+    ProcessResult replay =
+        run_nprquake({"-userdir", user, "-basedir", data_root(), "-game", "lq1", "-width", "320",
+                      "-height", "240", "+timedemo", "walk_a", "+quit"},
+                     dir.path(), 300);
+    ASSERT_EQ(replay.exit_code, 0) << replay.describe();
+    const auto lines = timedemo_lines(replay.out);
+    ASSERT_EQ(lines.size(), 1u) << replay.out;
+    EXPECT_EQ(lines[0].frames, expected_timedemo_frames(*demo));
+}
+
+TEST(EngineGame, MissingMapIsAMessageAndTheEngineGoesOn) {
+    TempDir dir("nq_game_missing");
+    ProcessResult r = run_nprquake(
+        {"-userdir", dir.subdir("user"), "-basedir", data_root(), "-game", "lq1", "-width", "320",
+         "-height", "240", "+map", "nosuchmap", "+map", "start", "+wait", "+status", "+quit"},
+        dir.path(), 120);
+    ASSERT_EQ(r.exit_code, 0) << r.describe();
+    EXPECT_FALSE(lines_containing(r.out, "maps/nosuchmap.bsp").empty()) << r.out;
+    EXPECT_FALSE(lines_containing(r.out, "map: start").empty()) << r.out;
+}
+
+}  // namespace
+}  // namespace nq
