@@ -205,7 +205,8 @@ void Engine::register_game_commands() {
         [this](const CommandArgs&) {
             server::ServerLevel* level = game_level();
             if (!level) return print("restart: no game is running");
-            start_map(level->map_name, false);
+            const std::string map = level->map_name;  // the level goes when the map starts
+            start_map(map, false);
         },
         "start the current map again");
     c.add_command(

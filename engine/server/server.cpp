@@ -165,11 +165,7 @@ SpawnResult Server::spawn(std::string_view map, const ServerSettings& settings, 
     const auto start = std::chrono::steady_clock::now();
     SpawnResult result;
     // Parms carry from the level being left (SetChangeParms ran when it asked to change).
-    if (keep_parms && level_) {
-        carried_parms_ = level_->client.spawn_parms;
-        have_carried_parms_ = true;
-        serverflags_ = level_->vm->global_float(level_->layout.globals.serverflags);
-    }
+    if (keep_parms && level_) save_spawn_parms();
     shutdown();
     error_.clear();
     settings_ = settings;
@@ -202,6 +198,26 @@ SpawnResult Server::spawn(std::string_view map, const ServerSettings& settings, 
     result.load_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
+}
+
+// SV_SaveSpawnparms: the player's parms for the next level, as the progs' SetChangeParms makes
+// them (keys and powerups dropped, health clamped), and the episode flags.
+void Server::save_spawn_parms() {
+    ServerLevel& level = *level_;
+    vm::Vm& vm = *level.vm;
+    const GlobalOffsets& g = level.layout.globals;
+    serverflags_ = vm.global_float(g.serverflags);
+    carried_parms_ = level.client.spawn_parms;
+    have_carried_parms_ = true;
+    if (!level.client.spawned) return;
+    vm.set_global_word(g.self, vm.entity_value(kPlayer));
+    if (!vm.execute(int32_t(vm.global_word(g.SetChangeParms)))) {
+        host_.print("SetChangeParms: " + vm.error()->to_string() + "\n");
+        return;
+    }
+    for (int i = 0; i < kNumSpawnParms; ++i) {
+        carried_parms_[size_t(i)] = vm.global_float(g.parm1 + uint32_t(i));
+    }
 }
 
 // SV_ConnectClient, prespawn, spawn and begin of the one local client, in one go. What QuakeC

@@ -91,6 +91,7 @@ class Server {
   private:
     std::string load_level(std::string_view map, const ServerSettings& settings);
     void connect_client(bool keep_parms);
+    void save_spawn_parms();
     void join_saved_client();  // server_load.cpp
     void write_prespawn(std::vector<uint8_t>& out) const;
     void write_spawn_state(std::vector<uint8_t>& out) const;

@@ -256,5 +256,25 @@ TEST(ServerGameplay, TheExitOfLq1m1AsksForItsNextMap) {
     EXPECT_TRUE(game.run(10));  // the level goes on until someone changes it
 }
 
+TEST(ServerGameplay, ChangingLevelCarriesThePlayersHealthAndAmmo) {
+    Game game("lq1m1");
+    ASSERT_TRUE(game.run(10));
+    game.vm().set_field_float(kPlayer, game.f().health, 70);
+    game.vm().set_field_float(kPlayer, game.f().ammo_shells, 50);
+    game.vm().set_field_float(kPlayer, game.f().ammo_nails, 40);
+    const SpawnResult r = game.server.spawn("start", {}, true);
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    ServerLevel& next = *game.server.level();
+    const FieldOffsets& f = next.layout.fields;
+    // id's SetChangeParms keeps health between 50 and 100 and the ammo as it was.
+    EXPECT_EQ(next.vm->field_float(kPlayer, f.health), 70.0f);
+    EXPECT_EQ(next.vm->field_float(kPlayer, f.ammo_shells), 50.0f);
+    EXPECT_EQ(next.vm->field_float(kPlayer, f.ammo_nails), 40.0f);
+    // A new game starts from SetNewParms instead.
+    ASSERT_TRUE(game.server.spawn("start", {}, false).error.empty());
+    ServerLevel& fresh = *game.server.level();
+    EXPECT_EQ(fresh.vm->field_float(kPlayer, fresh.layout.fields.health), 100.0f);
+}
+
 }  // namespace
 }  // namespace nq::server
