@@ -12,6 +12,7 @@
 #include <regex>
 
 #include "common/file_io.h"
+#include "engine_image_checks.h"
 #include "engine_output_checks.h"
 #include "formats/dem.h"
 #include "formats/message_decoder.h"
@@ -136,6 +137,56 @@ TEST(EngineGame, MissingMapIsAMessageAndTheEngineGoesOn) {
     ASSERT_EQ(r.exit_code, 0) << r.describe();
     EXPECT_FALSE(lines_containing(r.out, "maps/nosuchmap.bsp").empty()) << r.out;
     EXPECT_FALSE(lines_containing(r.out, "map: start").empty()) << r.out;
+}
+
+// The game goes on through plugin swaps: the server clock keeps advancing and each style
+// draws the level (technical's white faces and dark lines differ from classic's textures).
+TEST(EngineGame, SwappingStylesMidGameKeepsItRunningAndDrawn) {
+    TempDir dir("nq_game_swap");
+    const std::string user = dir.subdir("user");
+    std::filesystem::create_directories(user + "/lq1");
+    std::string script = "host_framerate 0.0138889\nmap start\n";
+    auto wait = [&](int n) {
+        for (int i = 0; i < n; ++i) script += "wait\n";
+    };
+    wait(30);
+    script += "screenshot " + dir.file("classic.png") + "\nstatus\nr_plugin technical\n";
+    wait(30);
+    script += "screenshot " + dir.file("technical.png") + "\nstatus\nr_plugin classic\n";
+    wait(30);
+    script += "status\nquit\n";
+    std::ofstream(user + "/lq1/swap.cfg") << script;
+    ProcessResult r = run_nprquake({"-userdir", user, "-basedir", data_root(), "-game", "lq1",
+                                    "-width", "320", "-height", "240", "+exec", "swap.cfg"},
+                                   dir.path(), 300);
+    ASSERT_EQ(r.exit_code, 0) << r.describe();
+    EXPECT_EQ(sanitizer_report(r.err), "");
+    // Three status reports, the server clock advancing 30 frames (30/72 s) between them.
+    std::vector<double> times;
+    for (const std::string& line : lines_containing(r.out, "time: ")) {
+        times.push_back(std::stod(line.substr(line.find("time: ") + 6)));
+    }
+    ASSERT_EQ(times.size(), 3u) << r.out;
+    EXPECT_NEAR(times[1] - times[0], 30.0 / 72, 0.06);
+    EXPECT_NEAR(times[2] - times[1], 30.0 / 72, 0.06);
+    EXPECT_EQ(lines_containing(r.out, "renderer: technical").size(), 1u);
+    RgbImage classic, technical;
+    ASSERT_NO_FATAL_FAILURE(test::load_screenshot(dir.file("classic.png"), classic));
+    ASSERT_NO_FATAL_FAILURE(test::load_screenshot(dir.file("technical.png"), technical));
+    const test::RegionStats a = test::region_stats(classic, test::whole(classic));
+    EXPECT_GT(a.distinct_colours, 50u) << "classic drew nothing";
+    // Same place, same instant of a still player: what differs is the style (technical's
+    // Gooch-shaded weapon and models, its lines).
+    ASSERT_EQ(classic.width, technical.width);
+    ASSERT_EQ(classic.height, technical.height);
+    size_t differing = 0;
+    for (int y = 0; y < classic.height; ++y) {
+        for (int x = 0; x < classic.width; ++x) {
+            const Rgb p = test::pixel(classic, x, y), q = test::pixel(technical, x, y);
+            differing += !test::near_colour(p, q, 40);
+        }
+    }
+    EXPECT_GT(differing, size_t(classic.width * classic.height / 200)) << "the styles look alike";
 }
 
 }  // namespace
