@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "fs/vfs.h"
+#include "server/monster_waking.h"
 #include "server/server.h"
 #include "server/server_commands.h"
 #include "server/server_level.h"
@@ -25,7 +26,6 @@ namespace {
 using namespace nq;
 using namespace nq::server;
 
-constexpr uint32_t kPlayer = 1;
 constexpr double kFrame = 1.0 / 72;
 
 class VfsHost : public ServerHost {
@@ -79,55 +79,6 @@ bool parse(int argc, char** argv, Options& o) {
     return true;
 }
 
-struct Bench {
-    ServerLevel& level;
-    Server& server;
-    vm::Vm& vm() { return *level.vm; }
-    const FieldOffsets& f() { return level.layout.fields; }
-
-    bool run(double seconds, const UserCmd& cmd = {}) {
-        for (int i = 0; i < int(seconds * 72); ++i) {
-            if (!server.frame(kFrame, cmd)) return false;
-        }
-        return true;
-    }
-    std::vector<uint32_t> monsters() {
-        std::vector<uint32_t> out;
-        for (uint32_t e = 2; e < vm().num_edicts(); ++e) {
-            if (level.edicts.is_free(e)) continue;
-            if ((int(vm().field_float(e, f().flags)) & qc::kFlMonster) &&
-                vm().field_float(e, f().health) > 0) {
-                out.push_back(e);
-            }
-        }
-        return out;
-    }
-    int hunting() {
-        int n = 0;
-        for (uint32_t m : monsters())
-            n += uint32_t(vm().field_int(m, f().enemy)) == vm().entity_value(kPlayer);
-        return n;
-    }
-    // A spot 256 units from the monster, level with it, that a player-sized box reaches from
-    // the monster with nothing in between.
-    std::optional<vm::Vec3f> spot_near(uint32_t m) {
-        const vm::Vec3f at = vm().field_vector(m, f().origin);
-        for (int k = 0; k < 8; ++k) {
-            const float r = float(k * M_PI / 4);
-            const vm::Vec3f spot = {at[0] + 256 * std::cos(r), at[1] + 256 * std::sin(r), at[2]};
-            const MoveTrace t =
-                level.world.move(at, {-16, -16, -24}, {16, 16, 32}, spot, MoveKind::normal, m);
-            if (t.fraction == 1 && !t.start_solid) return spot;
-        }
-        return std::nullopt;
-    }
-    void place_player(const vm::Vec3f& at) {
-        vm().set_field_vector(kPlayer, f().origin, at);
-        vm().set_field_vector(kPlayer, f().velocity, {0, 0, 0});
-        level.world.link(kPlayer, false);
-    }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -156,23 +107,21 @@ int main(int argc, char** argv) {
     const double load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load_start)
             .count();
-    Bench b{*server.level(), server};
-    toggle_god(b.level);
-    if (!b.run(2)) return std::fprintf(stderr, "serverbench: %s\n", server.error().c_str()), 1;
-
-    const std::vector<uint32_t> all = b.monsters();
-    const int wanted = int(std::ceil(o.hunting * double(all.size())));
-    std::optional<vm::Vec3f> last_spot;
-    for (uint32_t m : all) {
-        if (b.hunting() >= wanted) break;
-        const std::optional<vm::Vec3f> spot = b.spot_near(m);
-        if (!spot || b.level.edicts.is_free(m)) continue;
-        b.place_player(*spot);
-        last_spot = spot;
-        if (!b.run(1)) return std::fprintf(stderr, "serverbench: %s\n", server.error().c_str()), 1;
+    ServerLevel& level = *server.level();
+    toggle_god(level);
+    auto run = [&](double seconds) {
+        for (int i = 0; i < int(seconds * 72); ++i) {
+            if (!server.frame(kFrame, {})) return false;
+        }
+        return true;
+    };
+    const size_t monsters = living_monsters(level).size();
+    if (!run(2) || !wake_monsters(server, o.hunting)) {
+        return std::fprintf(stderr, "serverbench: %s\n", server.error().c_str()), 1;
     }
+    const int woken = monsters_hunting_player(level);
     server.clear_frame_profile();
-    if (!b.run(o.seconds)) {
+    if (!run(o.seconds)) {
         return std::fprintf(stderr, "serverbench: %s\n", server.error().c_str()), 1;
     }
     std::vector<float> ms = server.frame_profile();
@@ -185,7 +134,8 @@ int main(int argc, char** argv) {
         "serverbench %s: load %.0f ms; %zu monsters, %d hunting the player after waking; "
         "%zu frames: median %.3f ms, 95th %.3f ms, 99th %.3f ms, max %.3f ms; %d hunting at "
         "the end, %u edicts\n",
-        o.map.c_str(), load_ms, all.size(), b.hunting(), ms.size(), at(0.5), at(0.95), at(0.99),
-        ms.empty() ? 0.0 : double(ms.back()), b.hunting(), b.vm().num_edicts());
+        o.map.c_str(), load_ms, monsters, woken, ms.size(), at(0.5), at(0.95), at(0.99),
+        ms.empty() ? 0.0 : double(ms.back()), monsters_hunting_player(level),
+        level.vm->num_edicts());
     return 0;
 }
