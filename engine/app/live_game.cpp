@@ -27,11 +27,16 @@ std::string LiveGame::start(const std::string& map, const server::ServerSettings
                             bool keep_parms) {
     const server::SpawnResult result = server_.spawn(map, settings, keep_parms);
     if (!result.error.empty()) return result.error;
+    level_started();
+    return {};
+}
+
+// The server's new level: its signon goes to the client with the next frame.
+void LiveGame::level_started() {
     protocol_ = {};
     pending_time_ = 0;
     fresh_level_ = true;
     error_.reset();
-    return {};
 }
 
 FrameStatus LiveGame::run_frame(ClientState& client, double frame_time, const MoveCommand& cmd) {

@@ -47,6 +47,7 @@ class LiveGame {
     const std::optional<Error>& error() const { return error_; }
 
   private:
+    void level_started();
     bool apply(ClientState& client, std::span<const uint8_t> block,
                const std::array<float, 3>& angles);
 

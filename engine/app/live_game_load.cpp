@@ -8,10 +8,7 @@ namespace nq {
 std::string LiveGame::load(const server::LoadedGame& game, const server::ServerSettings& settings) {
     const server::SpawnResult result = server_.load_game(game, settings);
     if (!result.error.empty()) return result.error;
-    protocol_ = {};
-    pending_time_ = 0;
-    fresh_level_ = true;
-    error_.reset();
+    level_started();
     return {};
 }
 

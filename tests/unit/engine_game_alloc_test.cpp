@@ -10,25 +10,13 @@
 #include "server/monster_waking.h"
 #include "server/server_commands.h"
 #include "server/server_level.h"
+#include "support/data_server_host.h"
 #include "support/test_data.h"
 
 namespace nq {
 namespace {
 
-class DataHost : public server::ServerHost {
-  public:
-    std::optional<std::vector<uint8_t>> read_file(std::string_view path) override {
-        auto bytes = nq::read_file(test::lq1_dir() + "/" + std::string(path));
-        if (!bytes) return std::nullopt;
-        return std::move(*bytes);
-    }
-    void print(std::string_view) override {}
-    void debug_print(std::string_view) override {}
-    float cvar_value(std::string_view name) override { return name == "sv_aim" ? 1.0f : 0.0f; }
-    std::string cvar_string(std::string_view) override { return ""; }
-    void set_cvar(std::string_view, std::string_view) override {}
-    void add_command(std::string_view) override {}
-};
+using DataHost = test::DataServerHost;
 
 TEST(EngineGameAlloc, HuntedPlayerFramesAllocateNothingOnceWarm) {
     DataHost host;

@@ -12,6 +12,7 @@
 #include "server/server.h"
 #include "server/server_commands.h"
 #include "server/server_level.h"
+#include "support/data_server_host.h"
 #include "support/test_data.h"
 
 namespace nq::server {
@@ -20,21 +21,7 @@ namespace {
 constexpr uint32_t kPlayer = 1;
 constexpr double kFrame = 1.0 / 72;
 
-class DataHost : public ServerHost {
-  public:
-    std::string console;
-    std::optional<std::vector<uint8_t>> read_file(std::string_view path) override {
-        auto bytes = nq::read_file(test::lq1_dir() + "/" + std::string(path));
-        if (!bytes) return std::nullopt;
-        return std::move(*bytes);
-    }
-    void print(std::string_view text) override { console += text; }
-    void debug_print(std::string_view) override {}
-    float cvar_value(std::string_view name) override { return name == "sv_aim" ? 1.0f : 0.0f; }
-    std::string cvar_string(std::string_view) override { return ""; }
-    void set_cvar(std::string_view, std::string_view) override {}
-    void add_command(std::string_view) override {}
-};
+using DataHost = test::DataServerHost;
 
 struct Game {
     DataHost host;
