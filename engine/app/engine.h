@@ -108,7 +108,8 @@ class Engine {
     void register_game_cvars();
     void register_game_commands();
     void register_save_commands();  // save_commands.cpp
-    void start_map(const std::string& map, bool keep_parms);
+    // A new game on `map`, or (parms carried or restarted) the running game going on there.
+    void start_map(const std::string& map, server::SpawnParms parms);
     void change_level_if_asked();
     void run_game_frame(double frame_time, FrameStatus& status);
     void start_recording(const CommandArgs& args);

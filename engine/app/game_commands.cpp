@@ -98,16 +98,16 @@ server::ServerLevel* Engine::game_level() {
     return game && game->running() ? game->server().level() : nullptr;
 }
 
-void Engine::start_map(const std::string& map, bool keep_parms) {
+void Engine::start_map(const std::string& map, server::SpawnParms parms) {
     if (!vfs_) return print("map: no game data mounted");
     std::unique_ptr<LiveGame> game;
     LiveGame* running = demo_->live();
-    const bool changing = keep_parms && running && running->running();
+    const bool changing = parms != server::SpawnParms::fresh && running && running->running();
     const auto started = std::chrono::steady_clock::now();
     if (changing) {
         // The same game goes on: the client receives the new level's signon like any message.
-        if (std::string why = running->start(map, server_settings(), true); !why.empty()) {
-            print("changelevel: " + why);
+        if (std::string why = running->start(map, server_settings(), parms); !why.empty()) {
+            print("map: " + why);
             return;
         }
     } else {
@@ -138,7 +138,7 @@ void Engine::change_level_if_asked() {
         print("changelevel: cannot find maps/" + *next + ".bsp; the game goes on here");
         return;
     }
-    start_map(*next, true);
+    start_map(*next, server::SpawnParms::carried);
 }
 
 void Engine::run_game_frame(double frame_time, FrameStatus& status) {
@@ -158,7 +158,7 @@ void Engine::start_recording(const CommandArgs& a) {
     std::string name = a.argv(1);
     if (name.find("..") != std::string::npos) return print("record: relative paths not allowed");
     if (name.size() < 4 || name.substr(name.size() - 4) != ".dem") name += ".dem";
-    if (a.argc() == 3) start_map(a.argv(2), false);
+    if (a.argc() == 3) start_map(a.argv(2), server::SpawnParms::fresh);
     LiveGame* game = demo_->live();
     if (!game || !game->running()) return print("record: no game is running (record <name> <map>)");
     const std::string dir = user_dir() + "/" + options_.game.value_or("id1");
@@ -189,7 +189,7 @@ void Engine::register_game_commands() {
         [this](const CommandArgs& a) {
             if (a.argc() < 2) return print("usage: map <name>");
             stop_recording();
-            start_map(a.argv(1), false);
+            start_map(a.argv(1), server::SpawnParms::fresh);
         },
         "start a new game on a map (map start)");
     c.add_command(
@@ -197,7 +197,7 @@ void Engine::register_game_commands() {
         [this](const CommandArgs& a) {
             if (a.argc() < 2) return print("usage: changelevel <name>");
             if (!game_level()) return print("changelevel: no game is running (use map)");
-            start_map(a.argv(1), true);
+            start_map(a.argv(1), server::SpawnParms::carried);
         },
         "go to another map keeping the player's health, items and ammo");
     c.add_command(
@@ -206,7 +206,7 @@ void Engine::register_game_commands() {
             server::ServerLevel* level = game_level();
             if (!level) return print("restart: no game is running");
             const std::string map = level->map_name;  // the level goes when the map starts
-            start_map(map, false);
+            start_map(map, server::SpawnParms::restart);
         },
         "start the current map again");
     c.add_command(

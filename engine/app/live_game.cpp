@@ -24,8 +24,8 @@ server::UserCmd to_user_cmd(const MoveCommand& m) {
 LiveGame::LiveGame(server::ServerHost& host) : server_(host), decoder_("server") {}
 
 std::string LiveGame::start(const std::string& map, const server::ServerSettings& settings,
-                            bool keep_parms) {
-    const server::SpawnResult result = server_.spawn(map, settings, keep_parms);
+                            server::SpawnParms parms) {
+    const server::SpawnResult result = server_.spawn(map, settings, parms);
     if (!result.error.empty()) return result.error;
     level_started();
     return {};

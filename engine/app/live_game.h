@@ -25,7 +25,7 @@ class LiveGame {
 
     // Starts (or changes to) `map`; "" on success, else why not.
     std::string start(const std::string& map, const server::ServerSettings& settings,
-                      bool keep_parms = false);
+                      server::SpawnParms parms = server::SpawnParms::fresh);
     // Starts a saved game instead (live_game_load.cpp); "" on success, else why not.
     std::string load(const server::LoadedGame& game, const server::ServerSettings& settings);
     void stop() { server_.shutdown(); }

@@ -161,11 +161,16 @@ std::string Server::load_level(std::string_view map, const ServerSettings& setti
     return "";
 }
 
-SpawnResult Server::spawn(std::string_view map, const ServerSettings& settings, bool keep_parms) {
+SpawnResult Server::spawn(std::string_view map, const ServerSettings& settings, SpawnParms parms) {
     const auto start = std::chrono::steady_clock::now();
     SpawnResult result;
     // Parms carry from the level being left (SetChangeParms ran when it asked to change).
-    if (keep_parms && level_) save_spawn_parms();
+    have_carried_parms_ = false;
+    if (level_ && parms == SpawnParms::carried) save_spawn_parms();
+    if (level_ && parms == SpawnParms::restart) {
+        carried_parms_ = level_->client.spawn_parms;
+        have_carried_parms_ = true;
+    }
     shutdown();
     error_.clear();
     settings_ = settings;
@@ -188,7 +193,7 @@ SpawnResult Server::spawn(std::string_view map, const ServerSettings& settings, 
     }
     level.loading = false;
     write_baselines(level);
-    connect_client(keep_parms && have_carried_parms_);
+    connect_client(have_carried_parms_);
     if (!level_) {
         result.error = error_;
         return result;

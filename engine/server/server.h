@@ -37,6 +37,13 @@ struct ServerSettings {
     PhysicsSettings physics;
 };
 
+// Where the player's spawn parms (health, items, ammo) come from when a level starts.
+enum class SpawnParms {
+    fresh,    // a new game: the progs' SetNewParms
+    carried,  // changelevel: the player as the progs' SetChangeParms leaves them
+    restart,  // the same level again: the parms the player entered it with
+};
+
 struct SpawnResult {
     std::string error;  // empty on success
     int spawned = 0, inhibited = 0;
@@ -50,10 +57,10 @@ class Server {
     Server(const Server&) = delete;
     Server& operator=(const Server&) = delete;
 
-    // Starts `map` (maps/<map>.bsp). Spawn parms of the player carry over from the level before
-    // when `keep_parms` (changelevel), else the progs' SetNewParms gives new ones.
+    // Starts `map` (maps/<map>.bsp) with the player's parms from `parms`; carried and restart
+    // parms need a level running before (without one, they are fresh).
     SpawnResult spawn(std::string_view map, const ServerSettings& settings,
-                      bool keep_parms = false);
+                      SpawnParms parms = SpawnParms::fresh);
     void shutdown();
     bool active() const { return level_ != nullptr; }
 
@@ -90,7 +97,7 @@ class Server {
 
   private:
     std::string load_level(std::string_view map, const ServerSettings& settings);
-    void connect_client(bool keep_parms);
+    void connect_client(bool carried_parms);
     void save_spawn_parms();
     void join_saved_client();  // server_load.cpp
     void write_prespawn(std::vector<uint8_t>& out) const;

@@ -249,7 +249,7 @@ TEST(ServerGameplay, ChangingLevelCarriesThePlayersHealthAndAmmo) {
     game.vm().set_field_float(kPlayer, game.f().health, 70);
     game.vm().set_field_float(kPlayer, game.f().ammo_shells, 50);
     game.vm().set_field_float(kPlayer, game.f().ammo_nails, 40);
-    const SpawnResult r = game.server.spawn("start", {}, true);
+    const SpawnResult r = game.server.spawn("start", {}, SpawnParms::carried);
     ASSERT_TRUE(r.error.empty()) << r.error;
     ServerLevel& next = *game.server.level();
     const FieldOffsets& f = next.layout.fields;
@@ -257,8 +257,14 @@ TEST(ServerGameplay, ChangingLevelCarriesThePlayersHealthAndAmmo) {
     EXPECT_EQ(next.vm->field_float(kPlayer, f.health), 70.0f);
     EXPECT_EQ(next.vm->field_float(kPlayer, f.ammo_shells), 50.0f);
     EXPECT_EQ(next.vm->field_float(kPlayer, f.ammo_nails), 40.0f);
+    // Restarting the level gives back the parms the player entered it with.
+    next.vm->set_field_float(kPlayer, f.health, 20);
+    ASSERT_TRUE(game.server.spawn("start", {}, SpawnParms::restart).error.empty());
+    ServerLevel& again = *game.server.level();
+    EXPECT_EQ(again.vm->field_float(kPlayer, again.layout.fields.health), 70.0f);
+    EXPECT_EQ(again.vm->field_float(kPlayer, again.layout.fields.ammo_shells), 50.0f);
     // A new game starts from SetNewParms instead.
-    ASSERT_TRUE(game.server.spawn("start", {}, false).error.empty());
+    ASSERT_TRUE(game.server.spawn("start", {}, SpawnParms::fresh).error.empty());
     ServerLevel& fresh = *game.server.level();
     EXPECT_EQ(fresh.vm->field_float(kPlayer, fresh.layout.fields.health), 100.0f);
 }
