@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# The game's own costs, headless, with scripted sessions of ordinary console commands:
-#   1. server frame time (physics + QuakeC + messages) on e2m3 with its monsters awake and
-#      hunting the player (god mode; the player flies through the level firing rockets):
-#      median and 99th percentile from `serverprofile`, and how many monsters hunt the player;
+# The game's own costs, headless:
+#   0. serverbench: the server alone on e2m3 with its monsters woken (until half hunt, as many as a player can meet) and hunting the
+#      god-mode player, 60 s of server frames (median, 95th, 99th percentile, worst);
+# and scripted sessions of ordinary console commands in the engine:
+#   1. server frame time in the engine (`serverprofile`) while the player flies through e2m3
+#      (noclip, god) firing rockets: the same server work, sharing the CPU with rendering;
 #   2. level load: `map e2m3` to its first drawn frame with `classic` (median of the runs);
 #   3. playing lq1m1 against a timedemo of a recording of the same session: the game's host
 #      frames (`gamestats`) and the timedemo's, interleaved (play, replay, play, replay...).
@@ -71,7 +73,16 @@ summary=$out/summary.md
     echo
 } > "$summary"
 
-echo "== e2m3: server frame time with monsters hunting"
+echo "== serverbench e2m3 / lq1m1: the server alone, monsters hunting"
+for map in e2m3 lq1m1; do
+    for i in $(seq "$runs"); do
+        line=$("$build/bin/serverbench" -basedir "$data" -game lq1 --map "$map" --hunting 0.5 --seconds 60)
+        echo "$line"
+        echo "- $line" >> "$summary"
+    done
+done
+
+echo "== e2m3 in the engine: server frame time while flying through the level"
 for i in $(seq "$runs"); do
     log=$(run +exec bench_e2m3.cfg)
     prof=$(echo "$log" | grep '^server frames:' | tail -1)
