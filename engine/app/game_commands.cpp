@@ -100,6 +100,11 @@ server::ServerLevel* Engine::game_level() {
 
 void Engine::start_map(const std::string& map, server::SpawnParms parms) {
     if (!vfs_) return print("map: no game data mounted");
+    // Checked first: a changelevel to a missing map must not end the game being played.
+    if (!vfs_->exists("maps/" + map + ".bsp")) {
+        return print("map: cannot find maps/" + map + ".bsp" +
+                     (game_level() ? "; the game goes on" : ""));
+    }
     std::unique_ptr<LiveGame> game;
     LiveGame* running = demo_->live();
     const bool changing = parms != server::SpawnParms::fresh && running && running->running();
@@ -134,10 +139,6 @@ void Engine::change_level_if_asked() {
     if (!game || !game->running()) return;
     std::optional<std::string> next = game->server().take_changelevel();
     if (!next) return;
-    if (!vfs_->exists("maps/" + *next + ".bsp")) {
-        print("changelevel: cannot find maps/" + *next + ".bsp; the game goes on here");
-        return;
-    }
     start_map(*next, server::SpawnParms::carried);
 }
 

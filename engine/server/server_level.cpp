@@ -23,7 +23,9 @@ int ServerLevel::sound_index(std::string_view name) const {
 
 std::span<const uint8_t> ServerLevel::pvs_of(const vm::Vec3f& point) {
     const uint32_t leaf = leaf_at(*bsp, point);
-    if (leaf >= bsp->leafs.size()) return {};
+    // Leaf 0 is the solid outside: Quake gives an eye there (noclip) the "no vis" row, so
+    // everything is visible from it.
+    if (leaf == 0 || leaf >= bsp->leafs.size()) return {};
     if (pvs_rows_.size() != bsp->leafs.size()) {
         pvs_rows_.assign(bsp->leafs.size(), {});
         pvs_ready_.assign(bsp->leafs.size(), 0);

@@ -86,7 +86,7 @@ struct ServerLevel {
     bool is_client(uint32_t edict) const { return edict >= 1 && edict <= max_clients(); }
     int model_index(std::string_view name) const;  // -1 when not precached
     int sound_index(std::string_view name) const;  // -1 when not precached
-    // The PVS row of the leaf holding `point` (empty: everything visible). Rows are decompressed
+    // The PVS row of the leaf holding `point` (empty: everything visible, as from inside solid). Rows are decompressed
     // on first use and kept, so a running level allocates nothing for them.
     std::span<const uint8_t> pvs_of(const vm::Vec3f& point);
 

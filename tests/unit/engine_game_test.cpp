@@ -131,11 +131,14 @@ TEST(EngineGame, ScriptedSessionRecordsAReplayableDeterministicDemo) {
 TEST(EngineGame, MissingMapIsAMessageAndTheEngineGoesOn) {
     TempDir dir("nq_game_missing");
     ProcessResult r = run_nprquake(
-        {"-userdir", dir.subdir("user"), "-basedir", data_root(), "-game", "lq1", "-width", "320",
-         "-height", "240", "+map", "nosuchmap", "+map", "start", "+wait", "+status", "+quit"},
+        {"-userdir", dir.subdir("user"), "-basedir", data_root(), "-game",     "lq1",  "-width",
+         "320",      "-height",          "240",      "+map",      "nosuchmap", "+map", "start",
+         "+wait",    "+changelevel",     "e1m2",     "+wait",     "+status",   "+quit"},
         dir.path(), 120);
     ASSERT_EQ(r.exit_code, 0) << r.describe();
     EXPECT_FALSE(lines_containing(r.out, "maps/nosuchmap.bsp").empty()) << r.out;
+    // A changelevel (what lq1m1's exit asks for) to a map that is not there leaves the game on.
+    EXPECT_FALSE(lines_containing(r.out, "maps/e1m2.bsp; the game goes on").empty()) << r.out;
     EXPECT_FALSE(lines_containing(r.out, "map: start").empty()) << r.out;
 }
 
