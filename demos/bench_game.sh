@@ -76,7 +76,8 @@ summary=$out/summary.md
 echo "== serverbench e2m3 / lq1m1: the server alone, monsters hunting"
 for map in e2m3 lq1m1; do
     for i in $(seq "$runs"); do
-        line=$("$build/bin/serverbench" -basedir "$data" -game lq1 --map "$map" --hunting 0.5 --seconds 60)
+        line=$("$build/bin/serverbench" -basedir "$data" -game lq1 --map "$map" --hunting 0.5 --seconds 60 2>&1) ||
+            line="serverbench $map: FAILED: $line"
         echo "$line"
         echo "- $line" >> "$summary"
     done
@@ -86,6 +87,7 @@ echo "== e2m3 in the engine: server frame time while flying through the level"
 for i in $(seq "$runs"); do
     log=$(run +exec bench_e2m3.cfg)
     prof=$(echo "$log" | grep '^server frames:' | tail -1)
+    [ -n "$prof" ] || prof="FAILED (no serverprofile line)"
     hunting=$(echo "$log" | grep -o '[0-9]* hunting the player' | tail -1)
     load=$(echo "$log" | grep -o 'first frame [0-9]* ms' | head -1)
     echo "run $i: $prof; $hunting; map e2m3 $load"
@@ -99,7 +101,10 @@ for i in $(seq "$runs"); do
     demo=$(run +timedemo bench_lq1m1 +quit | grep -E '^[0-9]+ frames' | tail -1)
     p_fps=$(echo "$play" | awk '{print $6}')
     d_fps=$(echo "$demo" | awk '{print $5}')
-    ratio=$(awk -v p="$p_fps" -v d="$d_fps" 'BEGIN { if (p > 0) printf "%.3f", d / p; else print "n/a" }')
+    # A ratio only when both runs really happened.
+    ratio=$(awk -v p="${p_fps:-0}" -v d="${d_fps:-0}" 'BEGIN { if (p > 0 && d > 0) printf "%.3f", d / p; else print "FAILED" }')
+    [ -n "$play" ] || play="game: FAILED (no gamestats line)"
+    [ -n "$demo" ] || demo="FAILED (no timedemo line)"
     echo "run $i: playing: ${play#game: }; timedemo: $demo; play/timedemo frame time: $ratio"
     echo "- lq1m1 run $i: playing ${play#game: }; timedemo $demo; play/timedemo frame time $ratio" >> "$summary"
 done

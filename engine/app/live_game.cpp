@@ -67,8 +67,7 @@ FrameStatus LiveGame::run_frame(ClientState& client, double frame_time, const Mo
     // Drawn one server frame behind, so entities blend between the last two frames.
     client.set_time(server_.time() - kServerFrameTime + pending_time_);
     // The player's own angles, not blended: the view answers the mouse at once.
-    client.receive_block_angles({angles[0], angles[1], angles[2]});
-    client.receive_block_angles({angles[0], angles[1], angles[2]});
+    client.set_view_angles({angles[0], angles[1], angles[2]});
     return FrameStatus::Playing;
 }
 

@@ -131,6 +131,8 @@ class ClientState {
     std::optional<std::string> apply(const ServerMessage& message);
     // The view angles of a demo block header, received before the block's messages.
     void receive_block_angles(const Vec3& angles);
+    // The view angles of a player at the controls: used as they are, not blended.
+    void set_view_angles(const Vec3& angles) { player_.block_view_angles = {angles, angles}; }
 
     // ---- the frame
     void advance_clock(double frame_time);  // old_time = time; time += frame_time
