@@ -12,8 +12,11 @@ data=${NPRQ_DATA:-../shared/data}
 export SDL_VIDEODRIVER=${SDL_VIDEODRIVER:-offscreen}
 engine=build/release/bin/nprquake
 userdir=build/release/user
+# 640x480 unless the caller chose a size (the game's default.cfg asks vid_restart for 1280x720).
+size=(-width 640 -height 480)
+for arg in "$@"; do [[ "${arg,,}" == -width || "${arg,,}" == -height ]] && size=(); done
 if [ -d "$data/lq1" ]; then
-    exec "$engine" -userdir "$userdir" -basedir "$data" -game lq1 "$@" +timedemo demo +quit
+    exec "$engine" -userdir "$userdir" -basedir "$data" -game lq1 "${size[@]}" "$@" +timedemo demo +quit
 fi
 echo "main.sh: no game data at $data/lq1 (set NPRQ_DATA): showing the built-in showroom" >&2
 exec "$engine" -userdir "$userdir" -basedir "$data" "$@" \

@@ -43,7 +43,7 @@ extern "C" {
 #endif
 
 #define NQR_ABI_VERSION_MAJOR 1u
-#define NQR_ABI_VERSION_MINOR 2u
+#define NQR_ABI_VERSION_MINOR 3u
 #define NQR_ABI_VERSION ((NQR_ABI_VERSION_MAJOR << 16) | NQR_ABI_VERSION_MINOR)
 #define NQR_ABI_MAJOR(v) ((uint32_t)(v) >> 16)
 #define NQR_ENTRY_POINT "nqr_get_renderer"
@@ -416,6 +416,24 @@ enum nqr_renderer_wants {
     NQR_WANTS_GBUFFER = 1u << 0
 };
 
+/* Since 1.3. One line of the style's page in the engine's Options menu: a cvar the plugin
+ * registered, shown with a label and changed with the arrow keys. */
+enum nqr_menu_setting_kind {
+    NQR_MENU_TOGGLE = 0, /* 0 / 1, shown as off / on */
+    NQR_MENU_RANGE = 1,  /* a slider from min to max in steps of step */
+    NQR_MENU_CHOICE = 2  /* whole values 0 .. num_choices - 1, shown by choices[value] */
+};
+
+typedef struct nqr_menu_setting {
+    uint32_t size;
+    const char* cvar;  /* the cvar's name */
+    const char* label; /* short: the menu shows up to 20 characters */
+    uint32_t kind;     /* nqr_menu_setting_kind */
+    float min, max, step;
+    const char* const* choices;
+    uint32_t num_choices;
+} nqr_menu_setting;
+
 typedef struct nqr_renderer {
     uint32_t size;
     uint32_t abi_version;
@@ -442,6 +460,11 @@ typedef struct nqr_renderer {
     void (*draw_particles)(const nqr_frame* frame);
     void (*post_process)(const nqr_frame* frame, const nqr_gbuffer* gbuffer);
     void (*end_frame)(const nqr_frame* frame);
+
+    /* Since 1.3 (may be NULL / 0). The style's main settings, in the order the menu lists
+     * them; the array and its strings stay valid while the library is loaded. */
+    const nqr_menu_setting* menu_settings; /* array; stride menu_settings->size */
+    uint32_t num_menu_settings;
 } nqr_renderer;
 
 typedef const nqr_renderer* (*nqr_get_renderer_fn)(uint32_t engine_abi_version,

@@ -1,5 +1,7 @@
 #include "app/demo_session.h"
 
+#include <filesystem>
+
 #include "common/file_io.h"
 #include "fs/vfs.h"
 
@@ -24,6 +26,19 @@ DemoSession::DemoSession(const Vfs* vfs, DemoSessionCallbacks callbacks)
 
 DemoSession::~DemoSession() {
     stop();
+}
+
+bool DemoSession::exists(const std::string& name) const {
+    if (!vfs_ || name.empty() || name.find("..") != std::string::npos) return false;
+    for (const std::string& candidate : {name, name + ".dem"}) {
+        std::error_code ec;
+        if (!user_dir_.empty() &&
+            std::filesystem::is_regular_file(user_dir_ + "/" + candidate, ec)) {
+            return true;
+        }
+        if (vfs_->exists(candidate)) return true;
+    }
+    return false;
 }
 
 std::string DemoSession::start(const std::string& name, DemoMode mode) {

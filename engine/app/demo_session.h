@@ -34,12 +34,15 @@ class DemoSession {
     // Opens "<name>" or "<name>.dem" from the user dir or through the VFS; "" on success,
     // else the reason.
     std::string start(const std::string& name, DemoMode mode);
+    // Whether start() would find the demo's file (it may still fail to parse).
+    bool exists(const std::string& name) const;
     // Plays the game instead: `game` has just started a level; its messages feed the client
     // the way a demo's blocks do. The session keeps `game` until stop().
     void start_game(std::unique_ptr<LiveGame> game, const std::string& map);
     void stop();
     bool active() const { return player_.has_value() || live_ != nullptr; }
     LiveGame* live() { return live_.get(); }
+    const LiveGame* live() const { return live_.get(); }
 
     // A paused demo reads nothing and its clock stands still, so the same instant is drawn
     // again and again. Only a playing demo can be paused; starting or stopping one unpauses.

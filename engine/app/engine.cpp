@@ -41,6 +41,7 @@ Engine::Engine(const CommandLine& command_line)
 
 Engine::~Engine() {
     stop_recording();
+    menu_.reset();
     demo_.reset();
     dispatch_.reset();
     plugins_.reset();
@@ -101,6 +102,10 @@ bool Engine::start() {
          "fixed seconds per frame for the game and demos (0 = real time); scripted, "
          "deterministic runs use 1/72 = 0.0138889",
          0.0f, 1.0f});
+    cvars_.menu_scale = host_.cvars().register_cvar(
+        {"scr_menuscale", "1", kCvarArchive,
+         "menu scale on Quake's 320x200 menu canvas (limited to what fits the screen)", 1.0f,
+         10.0f});
     register_game_cvars();
     input_ = std::make_unique<PlayerInput>(host_.commands());
     cvars_.gamma = host_.cvars().register_cvar(
@@ -185,7 +190,10 @@ bool Engine::start() {
     server_host_ = std::make_unique<EngineServerHost>(host_, vfs_ ? &*vfs_ : nullptr,
                                                       [this](std::string_view t) { print(t); });
 
+    create_menu();
     register_commands();
+    register_demo_loop_commands();
+    register_video_commands();
     host_.set_file_reader([this](const std::string& path) -> std::optional<std::string> {
         std::string game = options_.game.value_or("id1");
         auto user = read_file(user_dir() + "/" + game + "/" + path);
@@ -196,9 +204,11 @@ bool Engine::start() {
         return std::string(bytes->begin(), bytes->end());
     });
     host_.queue_startup(command_line_);
-    host_.commands().execute();  // config.cfg, autoexec.cfg, then the +commands
+    host_.commands().execute();  // quake.rc (or config.cfg, autoexec.cfg), the +commands
     load_initial_plugin();
     if (!vfs_ && !demo_->active()) show_showroom(true);
+    // Quake's start without +commands: the menu, over the demo loop if there is one.
+    if (vfs_ && command_line_.command_text().empty() && !quit_) menu_->open(MenuScreen::Main);
     last_frame_seconds_ = seconds();
     return true;
 }
@@ -278,14 +288,18 @@ void Engine::frame() {
     if (demo_->active()) {
         FrameStatus status = FrameStatus::Playing;
         if (demo_->live()) {
-            run_game_frame(frame_time, status);
+            // A single-player game waits while the menu or the console is open, as in Quake.
+            const bool waiting = menu_->active() || console_->is_open();
+            run_game_frame(waiting ? 0.0 : frame_time, status);
         } else {
             status = demo_->frame(frame_time);
         }
         run_demo_schedule();
         if (status == FrameStatus::Ended) {
+            const bool next_in_loop = demo_loop_.playing();
             end_demo();
             timing = false;
+            if (next_in_loop && !quit_) play_next_loop_demo();
         }
     }
     render(frame_time);
@@ -328,7 +342,8 @@ void Engine::handle_events() {
         if (event.type == InputEventType::Resize) {
             console_->set_screen_size(window_->drawable_width(), window_->drawable_height());
         }
-        const bool playing = demo_->live() && !console_->is_open();
+        if (menu_takes_event(event)) continue;
+        const bool playing = demo_->live() && !console_->is_open() && !menu_->active();
         if (event.type == InputEventType::MouseMotion && playing) {
             input_->add_mouse(float(event.dx), float(event.dy));
         }
@@ -336,7 +351,7 @@ void Engine::handle_events() {
         console_->handle_event(event);
     }
     window_->set_text_input(console_->is_open());
-    const bool relative = demo_->live() && !console_->is_open();
+    const bool relative = demo_->live() && !console_->is_open() && !menu_->active();
     if (relative != relative_mouse_) window_->set_relative_mouse(relative);
     relative_mouse_ = relative;
 }
@@ -364,6 +379,8 @@ void Engine::render(double frame_time) {
     } else if (showroom_) {
         render_showroom(real_time, static_cast<float>(frame_time));
     }
+    hud_->count_frame(real_time);
+    draw_menu(real_time);
     if (console_drawer_) console_drawer_->draw(*console_);
     if (gamma_pass_) {
         gamma_pass_->apply(cvars_.gamma->value(), window_->drawable_width(),

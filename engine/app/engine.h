@@ -13,7 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "app/demo_loop.h"
 #include "app/demo_session.h"
+#include "app/engine_menu.h"
 #include "app/engine_server_host.h"
 #include "app/game_data.h"
 #include "app/host_services.h"
@@ -29,6 +31,7 @@
 #include "host/host_core.h"
 #include "host/launch_options.h"
 #include "hud/hud.h"
+#include "menu/menu.h"
 #include "plugin/plugin_host.h"
 #include "video/frame_stats.h"
 #include "video/frame_throttle.h"
@@ -47,6 +50,10 @@ struct EngineCvars {
     Cvar* occlusion = nullptr;
     Cvar* gamma = nullptr;
     Cvar* host_framerate = nullptr;
+    Cvar* menu_scale = nullptr;
+    Cvar* vid_width = nullptr;
+    Cvar* vid_height = nullptr;
+    Cvar* vid_fullscreen = nullptr;
 };
 
 // The game's cvars (Quake's names and defaults), read when a level starts or each frame.
@@ -99,6 +106,22 @@ class Engine {
     void write_config();
     std::string user_dir() const;
 
+    // engine_menu.cpp
+    void create_menu();
+    bool menu_takes_event(const InputEvent& event);
+    HudScreen menu_screen() const;
+    void draw_menu(double real_time);
+
+    // video_commands.cpp
+    void register_video_commands();
+    bool video_mode_locked() const;
+    void restart_video();
+
+    // demo_loop_commands.cpp
+    void register_demo_loop_commands();
+    void start_demo_loop(const CommandArgs& args);
+    void play_next_loop_demo();
+
     // engine_models.cpp
     void register_level_models(Level& level);
     void release_level_models();
@@ -144,6 +167,9 @@ class Engine {
     std::unique_ptr<RenderDispatch> dispatch_;
     std::unique_ptr<DemoSession> demo_;
     std::unique_ptr<PlayerInput> input_;
+    std::unique_ptr<EngineMenuServices> menu_services_;
+    std::unique_ptr<Menu> menu_;  // after hud_ and plugins_, whose pictures and styles it shows
+    DemoLoop demo_loop_;
     std::unique_ptr<EngineServerHost> server_host_;
     GameCvars game_cvars_;
     SceneBuilder scene_;
@@ -163,9 +189,8 @@ class Engine {
     double demo_real_time_ = 0;        // wall clock of the demo frame drawn last (for pause)
     uint64_t frame_count_ = 0;
     bool quit_ = false;
-    bool relative_mouse_ = false;
-    double map_started_seconds_ = -1;  // `map` ran: report the time to its first frame       // the
-                                       // mouse turns the view (a game runs, console closed)
+    bool relative_mouse_ = false;       // the mouse turns the view (a game runs, nothing open)
+    double map_started_seconds_ = -1;   // `map` ran: report the time to its first frame
     bool multisampled_screen_ = false;  // occlusion culling is then off
     int exit_status_ = 0;
 };

@@ -113,6 +113,7 @@ void Engine::start_demo(const std::string& name, DemoMode mode) {
         return;
     }
     show_showroom(false);
+    demo_loop_.set_playing(false);  // a demo chosen by hand ends the attract loop
     // The rest of the command line ("+timedemo demo +quit") waits for the demo to end.
     after_demo_text_ = host_.commands().take_pending_text();
     frame_times_.clear();
@@ -123,6 +124,7 @@ void Engine::end_demo() {
     if (!demo_->active()) return;
     if (demo_->mode() == DemoMode::TimeDemo) report_timedemo();
     demo_->stop();
+    demo_loop_.set_playing(false);
     demo_schedule_.clear();
     if (!vfs_) show_showroom(true);
     if (!after_demo_text_.empty()) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "app/engine.h"
+#include "host/number_text.h"
 #include "server/server_commands.h"
 #include "server/server_level.h"
 
@@ -229,6 +230,18 @@ void Engine::register_game_commands() {
     c.add_command("noclip", cheat(&server::toggle_noclip), "toggle flying through walls");
     c.add_command("fly", cheat(&server::toggle_fly), "toggle flying");
     c.add_command("status", cheat(&server::status_text), "the running game: map, time, player");
+    c.add_command(
+        "setpos",
+        [this](const CommandArgs& a) {
+            server::ServerLevel* level = game_level();
+            if (!level) return print("no game is running");
+            if (a.argc() != 4) return print("usage: setpos <x> <y> <z>");
+            const server::Vec3f origin{parse_number_prefix(a.argv(1)),
+                                       parse_number_prefix(a.argv(2)),
+                                       parse_number_prefix(a.argv(3))};
+            print(server::set_position(*level, origin));
+        },
+        "move the player to a point (setpos x y z), standing still");
     c.add_command(
         "serverprofile",
         [this](const CommandArgs& a) {

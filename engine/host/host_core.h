@@ -19,6 +19,7 @@ namespace nq {
 
 inline constexpr const char* kConfigFile = "config.cfg";
 inline constexpr const char* kAutoexecFile = "autoexec.cfg";
+inline constexpr const char* kQuakeRcFile = "quake.rc";
 
 class HostCore {
   public:
@@ -36,8 +37,10 @@ class HostCore {
     void set_print(PrintFn print) { commands_.set_print(std::move(print)); }
     void set_file_reader(FileReaderFn reader) { commands_.set_file_reader(std::move(reader)); }
 
-    // Buffers the startup sequence: config.cfg, then autoexec.cfg (each only if it exists:
-    // a first run has neither), then the command line's +commands. Run by execute().
+    // Buffers the startup sequence. When the game has a quake.rc, Quake's: `exec quake.rc`,
+    // whose `stuffcmds` runs the command line's +commands (LibreQuake's and id's run
+    // default.cfg, config.cfg, autoexec.cfg, stuffcmds, startdemos). Without one: config.cfg,
+    // then autoexec.cfg (each only if it exists), then the +commands. Run by execute().
     void queue_startup(const CommandLine& line);
 
     // A plugin is being unloaded: removes its commands and cvar callbacks; its cvars stay.
@@ -47,6 +50,7 @@ class HostCore {
     CvarRegistry cvars_;
     CommandSystem commands_;  // after cvars_: it holds a reference to them
     KeyBindings bindings_;
+    std::string startup_commands_;  // the command line's +commands, for stuffcmds
 };
 
 }  // namespace nq

@@ -35,12 +35,25 @@ std::vector<std::string> Hud::load_pictures(const Wad* gfx_wad, const Palette* p
         messages.push_back("status bar: " + warning);
     }
     if (!pictures.missing().empty()) {
-        std::string line = "status bar: not in the game data, not drawn:";
+        std::string line = "pictures not in the game data, not drawn:";
         for (const std::string& name : pictures.missing()) line += " " + name;
         messages.push_back(line);
     }
     drawer_->set_pictures(std::move(pictures));
     return messages;
+}
+
+void Hud::count_frame(double real_time) {
+    if (fps_since_ < 0 || real_time < fps_since_) {
+        fps_since_ = real_time;
+        fps_frames_ = 0;
+    }
+    ++fps_frames_;
+    if (const double elapsed = real_time - fps_since_; elapsed >= 1.0) {
+        fps_ = float(fps_frames_ / elapsed);
+        fps_since_ = real_time;
+        fps_frames_ = 0;
+    }
 }
 
 HudSettings Hud::settings() const {
@@ -49,6 +62,7 @@ HudSettings Hud::settings() const {
     settings.bar_alpha = cvars_.bar_alpha->value();
     settings.crosshair = cvars_.crosshair->value() != 0;
     settings.show_scores = show_scores_;
+    settings.show_fps = cvars_.show_fps->value() != 0;
     return settings;
 }
 
@@ -61,6 +75,7 @@ void Hud::draw(const ClientState& client, int eye_contents, int width, int heigh
     frame.screen = HudScreen{width, height, cvars_.bar_scale->value()};
     frame.settings = settings();
     frame.real_time = real_time;
+    frame.fps = fps_;
     drawer_->draw(client, blend, frame, cvars_.draw_hud->value() != 0);
 }
 

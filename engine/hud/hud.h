@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "client/client_state.h"
@@ -41,14 +42,25 @@ class Hud {
     // The view blend (unless gl_polyblend is 0), then the status bar and the rest (unless
     // scr_drawhud is 0), over a width x height screen.
     void draw(const ClientState& client, int eye_contents, int width, int height, double real_time);
+    // Counts a drawn frame for scr_showfps (the engine calls it once per frame it draws).
+    void count_frame(double real_time);
 
     const HudDrawer* drawer() const { return drawer_ ? &*drawer_ : nullptr; }
+    // Draws another overlay with the HUD's pictures (HudDrawer::draw_overlay).
+    template <typename Build>
+    void draw_overlay(int width, int height, Build&& build) {
+        if (drawer_) drawer_->draw_overlay(width, height, std::forward<Build>(build));
+    }
 
   private:
     HostCore& host_;
     HudCvars cvars_;
     std::optional<HudDrawer> drawer_;
     bool show_scores_ = false;
+    // scr_showfps: frames counted since the second began at fps_since_.
+    int fps_frames_ = 0;
+    double fps_since_ = -1;
+    float fps_ = 0;
     bool added_show_command_ = false;  // only what it added is removed again
     bool added_hide_command_ = false;
 };

@@ -37,13 +37,18 @@ HudCanvas HudCanvas::status_bar(QuadBatch& batch, const HudPictures& pictures,
     return HudCanvas(batch, pictures, left, top, scale);
 }
 
-HudCanvas HudCanvas::menu(QuadBatch& batch, const HudPictures& pictures, const HudScreen& screen) {
+HudCanvas::Placement HudCanvas::menu_placement(const HudScreen& screen) {
     float fits = std::min(static_cast<float>(screen.width) / kVirtualWidth,
                           static_cast<float>(screen.height) / kMenuHeight);
     float scale = clamp_scale(screen.requested_scale, fits);
     float left = (static_cast<float>(screen.width) - kVirtualWidth * scale) / 2;
     float top = (static_cast<float>(screen.height) - kMenuHeight * scale) / 2;
-    return HudCanvas(batch, pictures, left, top, scale);
+    return {std::floor(left), std::floor(top), scale};
+}
+
+HudCanvas HudCanvas::menu(QuadBatch& batch, const HudPictures& pictures, const HudScreen& screen) {
+    const Placement at = menu_placement(screen);
+    return HudCanvas(batch, pictures, at.left, at.top, at.scale);
 }
 
 HudCanvas HudCanvas::crosshair(QuadBatch& batch, const HudPictures& pictures,

@@ -42,6 +42,11 @@ class HudCanvas {
     static HudCanvas status_bar(QuadBatch& batch, const HudPictures& pictures,
                                 const HudScreen& screen, bool deathmatch);
     static HudCanvas menu(QuadBatch& batch, const HudPictures& pictures, const HudScreen& screen);
+    // Where the menu canvas lies on `screen`: its top-left corner in pixels and its scale.
+    struct Placement {
+        float left, top, scale;
+    };
+    static Placement menu_placement(const HudScreen& screen);
     static HudCanvas crosshair(QuadBatch& batch, const HudPictures& pictures,
                                const HudScreen& screen);
     // The status bar canvas's scale on `screen` (its bars are 24 * scale pixels tall).

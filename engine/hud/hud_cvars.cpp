@@ -32,6 +32,8 @@ HudCvars register_hud_cvars(CvarRegistry& cvars) {
     out.polyblend =
         register_numeric(cvars, "gl_polyblend", "1", 0, 0.0f, 1.0f,
                          "tint the screen for damage, pickups, powerups and liquids (0: never)");
+    out.show_fps = register_numeric(cvars, "scr_showfps", "0", kCvarArchive, 0.0f, 1.0f,
+                                    "1: frames per second at the top right of the screen");
     return out;
 }
 

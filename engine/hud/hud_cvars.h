@@ -8,6 +8,7 @@
 //   scr_drawhud    1     0: none of the above, nor scoreboards or the intermission screen (the
 //                        renderer's picture alone, for screenshots; Quake has no such switch)
 //   gl_polyblend   1     0: no full-screen tints (damage, pickups, powerups, liquids)
+//   scr_showfps    0     1: frames per second at the top right, over the last second
 #pragma once
 
 #include "host/cvar_registry.h"
@@ -21,6 +22,7 @@ struct HudCvars {
     const Cvar* crosshair = nullptr;
     const Cvar* draw_hud = nullptr;
     const Cvar* polyblend = nullptr;
+    const Cvar* show_fps = nullptr;
 };
 
 // Registers (or re-registers) the cvars. Never fails: the specs are valid.

@@ -37,6 +37,16 @@ class HudDrawer {
     void draw(const ClientState& client, const ScreenBlend& blend, const HudFrame& frame,
               bool with_hud = true);
 
+    // Another overlay's quads (the menu's), built by build(QuadBatch&, const HudPictures&)
+    // with this drawer's pictures, over what the screen shows.
+    template <typename Build>
+    void draw_overlay(int width, int height, Build&& build) {
+        if (width <= 0 || height <= 0) return;
+        QuadRenderer::Pass pass(renderer_, width, height);
+        if (atlas_) pass.use_texture(atlas_.id());
+        build(pass.batch(), pictures_);
+    }
+
     // Statistics of the latest draw(), for tests.
     size_t draw_calls() const { return drawn_ ? renderer_.draw_calls() : 0; }
     size_t quads_drawn() const { return drawn_ ? renderer_.quads_drawn() : 0; }

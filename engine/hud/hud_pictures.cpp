@@ -77,6 +77,23 @@ class PictureCollector {
     std::vector<RgbaImage> images_;
 };
 
+void collect_menu(PictureCollector& c, MenuPictureIds& ids) {
+    ids.plaque = c.from_file("gfx/qplaque.lmp");
+    ids.main_title = c.from_file("gfx/ttl_main.lmp");
+    ids.main_items = c.from_file("gfx/mainmenu.lmp");
+    ids.single_player_title = c.from_file("gfx/ttl_sgl.lmp");
+    ids.single_player_items = c.from_file("gfx/sp_menu.lmp");
+    ids.options_title = c.from_file("gfx/p_option.lmp");
+    ids.load_title = c.from_file("gfx/p_load.lmp");
+    ids.save_title = c.from_file("gfx/p_save.lmp");
+    for (int frame = 0; frame < kMenuDotFrames; ++frame) {
+        ids.dots[size_t(frame)] = c.from_file("gfx/menudot" + std::to_string(frame + 1) + ".lmp");
+    }
+    for (int page = 0; page < kMaxHelpPages; ++page) {
+        ids.help[size_t(page)] = c.from_file("gfx/help" + std::to_string(page) + ".lmp");
+    }
+}
+
 // Quake's picture names for each slot of HudPictureIds.
 void collect(PictureCollector& c, HudPictureIds& ids) {
     ids.sbar = c.from_wad("sbar");
@@ -123,6 +140,7 @@ void collect(PictureCollector& c, HudPictureIds& ids) {
     ids.inter = c.from_file("gfx/inter.lmp");
     ids.finale = c.from_file("gfx/finale.lmp");
     ids.ranking = c.from_file("gfx/ranking.lmp");
+    collect_menu(c, ids.menu);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
-// Every picture the status bar, the inventory, the scoreboards and the intermission screen
-// draw, loaded once from the game data into one atlas: gfx.wad's status-bar pictures and
-// conchars, and the intermission pictures gfx/complete.lmp, inter.lmp, finale.lmp and
-// ranking.lmp.
+// Every picture the status bar, the inventory, the scoreboards, the intermission screen and the
+// menu draw, loaded once from the game data into one atlas: gfx.wad's status-bar pictures and
+// conchars, the intermission pictures gfx/complete.lmp, inter.lmp, finale.lmp and ranking.lmp,
+// and the menu's gfx/*.lmp (menu/menu_drawing.h).
 //
 // Loading never fails. A picture the data lacks (LibreQuake has no gfx/complete.lmp), or one
 // that does not decode or is absurdly large, gets kNoPicture and its name in missing() or
@@ -34,6 +34,21 @@ inline constexpr int kWeaponInHand = 1;       // weapons[1]: inv2_*, the one in 
 inline constexpr int kWeaponFlashFrames = 5;  // weapons[2..6]: inva1_* .. inva5_*, picked up
 inline constexpr int kFaceHealthSteps = 5;    // faces[0] face5 (near death) .. [4] face1
 
+inline constexpr int kMenuDotFrames = 6;  // menudot1..6, the main menu's spinning cursor
+inline constexpr int kMaxHelpPages = 6;   // help0..help5
+
+// The menu's pictures (gfx/*.lmp): Quake's plaque, titles and item lists.
+struct MenuPictureIds {
+    PictureId plaque = kNoPicture;               // qplaque, left of every menu
+    PictureId main_title = kNoPicture;           // ttl_main
+    PictureId main_items = kNoPicture;           // mainmenu
+    PictureId single_player_title = kNoPicture;  // ttl_sgl
+    PictureId single_player_items = kNoPicture;  // sp_menu
+    PictureId options_title = kNoPicture, load_title = kNoPicture, save_title = kNoPicture;
+    std::array<PictureId, kMenuDotFrames> dots{};
+    std::array<PictureId, kMaxHelpPages> help{};
+};
+
 // The ids of the pictures, by what they show. (In a HudPictures that loaded nothing, every id
 // resolves to no picture.)
 struct HudPictureIds {
@@ -52,6 +67,7 @@ struct HudPictureIds {
     PictureId conchars = kNoPicture;                      // the 8x8 font, a 16x16 glyph sheet
     PictureId complete = kNoPicture, inter = kNoPicture;  // single-player intermission
     PictureId finale = kNoPicture, ranking = kNoPicture;  // episode end, deathmatch scores
+    MenuPictureIds menu;
 };
 
 // Pictures larger than this on either side are no Quake HUD picture (the largest, inter.lmp,

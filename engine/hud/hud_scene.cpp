@@ -1,5 +1,8 @@
 #include "hud/hud_scene.h"
 
+#include <cstdio>
+#include <cstring>
+
 #include "hud/intermission.h"
 #include "hud/scoreboard.h"
 #include "hud/status_bar.h"
@@ -36,6 +39,16 @@ void build_status_bar_canvas(const ClientState& client, const HudFrame& frame,
     }
 }
 
+// QuakeSpasm's "%4.0f fps", at the top right on the status bar's scale.
+void draw_fps(const HudFrame& frame, const HudPictures& pictures, QuadBatch& batch) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%4.0f fps", double(frame.fps));
+    const float scale = HudCanvas::status_bar_scale(frame.screen);
+    const float width = float(std::strlen(text)) * kCharacterSize;
+    HudCanvas canvas(batch, pictures, float(frame.screen.width) - (width + 8) * scale, 0, scale);
+    canvas.text(0, 4, text);
+}
+
 }  // namespace
 
 bool hud_has_content(const ClientState& client, const HudFrame& frame,
@@ -51,8 +64,9 @@ bool hud_has_content(const ClientState& client, const HudFrame& frame,
             break;
     }
     // Even at viewsize 120 the scorebar shows while dead or holding +showscores.
-    return frame.settings.crosshair || frame.settings.viewsize < kViewsizeNoBars ||
-           frame.settings.show_scores || client.player().stats[kStatHealth] <= 0;
+    return frame.settings.crosshair || frame.settings.show_fps ||
+           frame.settings.viewsize < kViewsizeNoBars || frame.settings.show_scores ||
+           client.player().stats[kStatHealth] <= 0;
 }
 
 void build_hud(const ClientState& client, const HudFrame& frame, const HudPictures& pictures,
@@ -69,6 +83,7 @@ void build_hud(const ClientState& client, const HudFrame& frame, const HudPictur
         case Intermission::None:
             break;
     }
+    if (frame.settings.show_fps) draw_fps(frame, pictures, batch);
     if (frame.settings.crosshair) {
         HudCanvas::crosshair(batch, pictures, frame.screen)
             .character(kCrosshairOffset, kCrosshairOffset, kCrosshairGlyph);

@@ -25,12 +25,14 @@ struct HudSettings {
     float bar_alpha = 0.75f;   // `scr_sbaralpha`, 0..1
     bool crosshair = false;    // `crosshair`
     bool show_scores = false;  // +showscores held
+    bool show_fps = false;     // `scr_showfps`
 };
 
 struct HudFrame {
     HudScreen screen;
     HudSettings settings;
     double real_time = 0;  // seconds; scrolls long level names
+    float fps = 0;         // frames per second over the last second (scr_showfps)
 };
 
 // Whether build_hud() would emit anything for this client and these settings.

@@ -136,7 +136,7 @@ void write_client_data(ServerLevel& level, uint32_t player, std::vector<uint8_t>
     const int weaponframe = to_int(vm.field_float(player, f.weaponframe), 0, 65535);
     const int armor = to_int(vm.field_float(player, f.armorvalue), 0, 65535);
     const int weapon =
-        std::max(0, level.model_index(vm.string_or_empty(vm.field_int(player, f.weaponmodel))));
+        std::max(0, level.model_index_of_string(vm.field_int(player, f.weaponmodel)));
     const int ammo = to_int(vm.field_float(player, f.currentammo), 0, 65535);
     const std::array<int, 4> counts = {to_int(vm.field_float(player, f.ammo_shells), 0, 65535),
                                        to_int(vm.field_float(player, f.ammo_nails), 0, 65535),

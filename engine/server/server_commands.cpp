@@ -90,6 +90,19 @@ std::string kill_player(ServerLevel& level) {
     return {};
 }
 
+std::string set_position(ServerLevel& level, const Vec3f& origin) {
+    vm::Vm& vm = *level.vm;
+    const FieldOffsets& f = level.layout.fields;
+    vm.set_field_vector(kPlayer, f.origin, origin);
+    vm.set_field_vector(kPlayer, f.velocity, Vec3f{0, 0, 0});
+    // Triggers are touched by the next frame's move, as after a teleport, not from the console.
+    level.world.link(kPlayer, false);
+    char line[96];
+    std::snprintf(line, sizeof line, "setpos %.1f %.1f %.1f", double(origin[0]), double(origin[1]),
+                  double(origin[2]));
+    return line;
+}
+
 std::string status_text(ServerLevel& level) {
     vm::Vm& vm = *level.vm;
     const FieldOffsets& f = level.layout.fields;

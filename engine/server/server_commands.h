@@ -1,5 +1,6 @@
 // The console commands that act on the local player in the running game (Quake's host_cmd.c):
-// cheats (god, noclip, fly, notarget, give), kill, and status. Each returns the line to print.
+// cheats (god, noclip, fly, notarget, give, setpos), kill, and status. Each returns the line to
+// print.
 #pragma once
 
 #include <string>
@@ -18,5 +19,7 @@ std::string give(ServerLevel& level, std::string_view what, float amount);
 // Runs QuakeC's ClientKill for the player; "" on success, else the QuakeC error.
 std::string kill_player(ServerLevel& level);
 std::string status_text(ServerLevel& level);
+// QuakeSpasm's setpos: the player to `origin`, standing still (a cheat, like noclip).
+std::string set_position(ServerLevel& level, const Vec3f& origin);
 
 }  // namespace nq::server

@@ -16,6 +16,19 @@ int ServerLevel::model_index(std::string_view name) const {
     return it == model_names.end() ? -1 : int(it - model_names.begin());
 }
 
+int ServerLevel::model_index_of_string(int32_t string) {
+    const std::string_view name = vm->string_or_empty(string);
+    // The same value may be a temp string holding other text now: the name is compared too.
+    if (last_model_index_ >= 0 && string == last_model_string_ &&
+        name == model_names[size_t(last_model_index_)]) {
+        return last_model_index_;
+    }
+    const int index = model_index(name);
+    last_model_string_ = string;
+    last_model_index_ = index;
+    return index;
+}
+
 int ServerLevel::sound_index(std::string_view name) const {
     const auto it = std::find(sound_names.begin(), sound_names.end(), name);
     return it == sound_names.end() ? -1 : int(it - sound_names.begin());

@@ -86,11 +86,16 @@ struct ServerLevel {
     bool is_client(uint32_t edict) const { return edict >= 1 && edict <= max_clients(); }
     int model_index(std::string_view name) const;  // -1 when not precached
     int sound_index(std::string_view name) const;  // -1 when not precached
+    // model_index of the QuakeC string `string` (a string value), remembered for the last
+    // string asked: the player's weaponmodel is looked up every frame and rarely changes.
+    int model_index_of_string(int32_t string);
     // The PVS row of the leaf holding `point` (empty: everything visible, as from inside solid). Rows are decompressed
     // on first use and kept, so a running level allocates nothing for them.
     std::span<const uint8_t> pvs_of(const vm::Vec3f& point);
 
   private:
+    int32_t last_model_string_ = 0;
+    int last_model_index_ = -1;  // only found indices are kept: a precache may come later
     std::vector<std::vector<uint8_t>> pvs_rows_;
     std::vector<uint8_t> pvs_ready_;
 };

@@ -23,7 +23,8 @@ struct InputEvent {
     bool down = false;              // Key: pressed (true) or released
     bool repeat = false;            // Key: auto-repeat of a held key
     std::array<char, 32> text{};    // Text: NUL-terminated UTF-8
-    int32_t dx = 0, dy = 0;         // MouseMotion
+    int32_t dx = 0, dy = 0;         // MouseMotion: the movement
+    int32_t x = 0, y = 0;           // MouseMotion: the pointer's place in the window
     int32_t width = 0, height = 0;  // Resize: new drawable size in pixels
 };
 

@@ -88,6 +88,8 @@ int translate_sdl_event(const SDL_Event& event, std::span<InputEvent, kMaxEvents
             out[0].type = InputEventType::MouseMotion;
             out[0].dx = event.motion.xrel;
             out[0].dy = event.motion.yrel;
+            out[0].x = event.motion.x;
+            out[0].y = event.motion.y;
             return 1;
         case SDL_WINDOWEVENT:
             return translate_window(event.window, out[0]);

@@ -1,5 +1,7 @@
 #include "video/video_window.h"
 
+#include <string_view>
+
 #include <epoxy/gl.h>
 
 #include <utility>
@@ -119,6 +121,12 @@ std::string VideoWindow::set_fullscreen(bool on) {
         return std::string("cannot change fullscreen mode: ") + SDL_GetError();
     }
     return {};
+}
+
+bool VideoWindow::can_change_size() const {
+    // The offscreen driver's surface keeps the size it was created with.
+    const char* driver = SDL_GetCurrentVideoDriver();
+    return !driver || std::string_view(driver) != "offscreen";
 }
 
 void VideoWindow::set_window_size(int width, int height) {

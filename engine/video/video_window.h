@@ -49,6 +49,8 @@ class VideoWindow {
     std::string set_vsync(bool on);
     std::string set_fullscreen(bool on);
     void set_window_size(int width, int height);
+    // False where the window cannot be resized after it opened (SDL's offscreen driver).
+    bool can_change_size() const;
     // Relative mode: hidden cursor, unbounded motion (in-game mouse look).
     void set_relative_mouse(bool on);
     // Text events for the console; off in game so keys do not also type.

@@ -123,7 +123,52 @@ const CvarBinding kBindings[] = {
 
 static_assert(std::size(kBindings) <= 64, "raise TechnicalCvars::kMaxCvars");
 
+const char* const kShadingChoices[] = {"classic", "gooch", "metal", "object id"};
+const char* const kEdgeColourChoices[] = {"base", "white creases", "white all"};
+const char* const kBackfaceChoices[] = {"never", "if needed", "always"};
+
+constexpr nqr_menu_setting toggle(const char* cvar, const char* label) {
+    return {sizeof(nqr_menu_setting), cvar, label, NQR_MENU_TOGGLE, 0, 1, 1, nullptr, 0};
+}
+constexpr nqr_menu_setting range(const char* cvar, const char* label, float min, float max,
+                                 float step) {
+    return {sizeof(nqr_menu_setting), cvar, label, NQR_MENU_RANGE, min, max, step, nullptr, 0};
+}
+template <size_t N>
+constexpr nqr_menu_setting choice(const char* cvar, const char* label,
+                                  const char* const (&choices)[N]) {
+    return {sizeof(nqr_menu_setting),
+            cvar,
+            label,
+            NQR_MENU_CHOICE,
+            0,
+            float(N - 1),
+            1,
+            choices,
+            uint32_t(N)};
+}
+
+const nqr_menu_setting kMenuSettings[] = {
+    toggle("tech_silhouettes", "Silhouettes"),
+    toggle("tech_creases", "Creases"),
+    toggle("tech_world_edges", "World edges"),
+    range("tech_silhouette_width", "Silhouette width", 0.5f, 6, 0.5f),
+    range("tech_crease_angle", "Crease angle", 10, 120, 5),
+    choice("tech_edge_colors", "Edge colours", kEdgeColourChoices),
+    choice("tech_backface_lines", "Back-face lines", kBackfaceChoices),
+    toggle("tech_fade", "Distance fade"),
+    choice("tech_shading", "Shading", kShadingChoices),
+    range("tech_gooch_b", "Gooch blue", 0, 1, 0.05f),
+    range("tech_gooch_y", "Gooch yellow", 0, 1, 0.05f),
+    toggle("tech_shadows", "Shadows"),
+    toggle("tech_shadow_penumbra", "Soft shadows"),
+};
+
 }  // namespace
+
+std::span<const nqr_menu_setting> technical_menu_settings() {
+    return kMenuSettings;
+}
 
 std::span<const CvarBinding> technical_cvar_bindings() {
     return kBindings;

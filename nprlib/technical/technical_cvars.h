@@ -22,6 +22,10 @@ struct CvarBinding {
 
 std::span<const CvarBinding> technical_cvar_bindings();
 
+// The style's main settings as the engine's Options menu shows them (ABI 1.3): a subset of the
+// bindings above, each naming one of them.
+std::span<const nqr_menu_setting> technical_menu_settings();
+
 // Registers every binding with the engine (NQR_CVAR_ARCHIVE) and keeps the live cvars; update()
 // copies changed ones into settings (cheap when nothing changed; never allocates).
 class TechnicalCvars {

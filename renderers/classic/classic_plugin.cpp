@@ -66,6 +66,8 @@ const nqr_renderer kTable = {
     classic_particles,
     nullptr,  // post_process
     nullptr,  // end_frame
+    nullptr,  // menu_settings: classic has no settings of its own
+    0,
 };
 
 }  // namespace

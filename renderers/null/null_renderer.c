@@ -38,6 +38,8 @@ static const nqr_renderer g_table = {
     null_frame, /* draw_particles */
     null_post,
     null_frame, /* end_frame */
+    NULL,       /* menu_settings */
+    0,
 };
 
 NQR_EXPORT const nqr_renderer* nqr_get_renderer(uint32_t engine_abi_version,

@@ -78,6 +78,8 @@ const nqr_renderer kTable = {
     technical_particles,
     nullptr,  // post_process
     nullptr,  // end_frame
+    nq::npr::technical::technical_menu_settings().data(),
+    static_cast<uint32_t>(nq::npr::technical::technical_menu_settings().size()),
 };
 
 }  // namespace

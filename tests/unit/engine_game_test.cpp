@@ -9,12 +9,15 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <regex>
 
 #include "common/file_io.h"
 #include "engine_image_checks.h"
 #include "engine_output_checks.h"
+#include "formats/bsp.h"
 #include "formats/dem.h"
+#include "formats/entities.h"
 #include "formats/message_decoder.h"
 #include "support/engine_run.h"
 #include "support/test_data.h"
@@ -140,6 +143,75 @@ TEST(EngineGame, MissingMapIsAMessageAndTheEngineGoesOn) {
     // A changelevel (what lq1m1's exit asks for) to a map that is not there leaves the game on.
     EXPECT_FALSE(lines_containing(r.out, "maps/e1m2.bsp; the game goes on").empty()) << r.out;
     EXPECT_FALSE(lines_containing(r.out, "map: start").empty()) << r.out;
+}
+
+// The centre of lq1m1's trigger_changelevel (its brush model's box, from the map's own
+// lumps) and the map it names.
+struct LevelExit {
+    std::array<float, 3> centre{};
+    std::string map;
+};
+
+std::optional<LevelExit> lq1m1_exit() {
+    auto bytes = read_file(lq1_dir() + "/maps/lq1m1.bsp");
+    if (!bytes) return std::nullopt;
+    auto bsp = parse_bsp(*bytes, "lq1m1.bsp");
+    if (!bsp) return std::nullopt;
+    auto entities = parse_entities(bsp->entities, "lq1m1.bsp");
+    if (!entities) return std::nullopt;
+    for (const Entity& e : entities->entities) {
+        if (find_value(e, "classname") != "trigger_changelevel") continue;
+        const auto model = find_value(e, "model");
+        const auto map = find_value(e, "map");
+        if (!model || !map || model->size() < 2 || (*model)[0] != '*') continue;
+        const size_t index = std::stoul(std::string(model->substr(1)));
+        if (index >= bsp->models.size()) continue;
+        const BspModel& m = bsp->models[index];
+        LevelExit out;
+        for (int k = 0; k < 3; ++k) out.centre[size_t(k)] = (m.mins[k] + m.maxs[k]) / 2;
+        out.map = std::string(*map);
+        return out;
+    }
+    return std::nullopt;
+}
+
+// A player walking into lq1m1's exit sees the intermission; pressing fire after it asks for
+// the next map, which is not in the data: a message, and the game goes on on lq1m1.
+TEST(EngineGame, TheExitToAMissingMapIsAMessageAndTheLevelGoesOn) {
+    const std::optional<LevelExit> exit = lq1m1_exit();
+    ASSERT_TRUE(exit) << "lq1m1 has no trigger_changelevel with a brush model";
+    ASSERT_FALSE(std::filesystem::exists(lq1_dir() + "/maps/" + exit->map + ".bsp"))
+        << "the test needs an exit to a map that is not there";
+    TempDir dir("nq_game_exit");
+    const std::string user = dir.subdir("user");
+    std::filesystem::create_directories(user + "/lq1");
+    std::string script = "host_framerate 0.0138889\nmap lq1m1\ngod\nnotarget\n";
+    auto wait = [&](int n) {
+        for (int i = 0; i < n; ++i) script += "wait\n";
+    };
+    wait(10);
+    char setpos[128];
+    std::snprintf(setpos, sizeof setpos, "setpos %.1f %.1f %.1f\n", double(exit->centre[0]),
+                  double(exit->centre[1]), double(exit->centre[2]));
+    script += setpos;
+    wait(72 * 7);  // the intermission, then Quake's 5 s before a button may end it
+    for (int press = 0; press < 4; ++press) {
+        script += "+attack\n";
+        wait(36);
+        script += "-attack\n";
+        wait(36);
+    }
+    script += "status\nquit\n";
+    std::ofstream(user + "/lq1/exit.cfg") << script;
+    ProcessResult r =
+        run_nprquake({"-userdir", user, "-basedir", data_root(), "-game", "lq1", "-width", "160",
+                      "-height", "120", "+r_plugin", "null", "+exec", "exit.cfg"},
+                     dir.path(), 300);
+    ASSERT_EQ(r.exit_code, 0) << r.describe();
+    EXPECT_EQ(sanitizer_report(r.out + r.err), "");
+    EXPECT_FALSE(lines_containing(r.out, "maps/" + exit->map + ".bsp; the game goes on").empty())
+        << r.out;
+    EXPECT_FALSE(lines_containing(r.out, "map: lq1m1").empty()) << r.out;
 }
 
 // The game goes on through plugin swaps: the server clock keeps advancing and each style

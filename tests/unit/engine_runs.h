@@ -5,7 +5,8 @@
 // what the engine draws over the scene: con_notifytime 0 and scr_centertime 0 stop printed
 // lines and centre messages, scr_drawhud 0 the status bar and scoreboards and gl_polyblend 0
 // the screen tints, so screenshots show only what the renderer drew (engine_hud_test.cpp turns
-// the bar back on).
+// the bar back on). The game's quake.rc runs first (LibreQuake's default.cfg turns on the
+// crosshair and the fps counter); the +commands come after it, so they win.
 #pragma once
 
 #include <array>
@@ -37,7 +38,7 @@ inline std::vector<std::string> base_args(const std::string& dir, const std::str
     if (!game.empty()) args.insert(args.end(), {"-game", game});
     args.insert(args.end(), {"-width", std::to_string(kWidth), "-height", std::to_string(kHeight),
                              "+con_notifytime", "0", "+scr_centertime", "0", "+scr_drawhud", "0",
-                             "+gl_polyblend", "0"});
+                             "+gl_polyblend", "0", "+crosshair", "0", "+scr_showfps", "0"});
     return args;
 }
 

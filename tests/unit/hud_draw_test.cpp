@@ -69,7 +69,7 @@ class HudDrawing : public ::testing::Test {
                           : hud->load_pictures(nullptr, nullptr, nullptr);
         ASSERT_NE(hud->drawer(), nullptr);
         for (const std::string& m : messages) {
-            EXPECT_EQ(m.find("status bar: not in the game data"), 0u) << m;  // only the .lmps
+            EXPECT_EQ(m.find("pictures not in the game data"), 0u) << m;  // only the .lmps
         }
         enter_level(client);
     }

@@ -1,0 +1,79 @@
+// startdemos, demos, stopdemo: Quake's attract loop (demo_loop.h). quake.rc ends with
+// `startdemos demo1 demo2 demo3`; demos that are not here are skipped with a warning, and when
+// none of the list is here the game directory's own demos loop instead, so a game started with
+// no +command shows the menu over a running demo rather than over nothing.
+#include <algorithm>
+
+#include "app/engine.h"
+
+namespace nq {
+
+namespace {
+
+std::string without_extension(const std::string& path) {
+    return path.size() > 4 && path.compare(path.size() - 4, 4, ".dem") == 0
+               ? path.substr(0, path.size() - 4)
+               : path;
+}
+
+}  // namespace
+
+void Engine::register_demo_loop_commands() {
+    CommandSystem& c = host_.commands();
+    c.add_command(
+        "startdemos", [this](const CommandArgs& a) { start_demo_loop(a); },
+        "startdemos <demo1> [demo2 ...]: loop these demos while no game runs");
+    c.add_command(
+        "demos",
+        [this](const CommandArgs&) {
+            if (demo_loop_.names().empty()) return print("demos: no demo loop (see startdemos)");
+            if (demo_->active()) end_demo();
+            play_next_loop_demo();
+        },
+        "demos: play the demo loop again, from its next demo");
+    c.add_command(
+        "stopdemo",
+        [this](const CommandArgs&) {
+            if (!demo_->active() || demo_->live()) return;
+            end_demo();
+        },
+        "stopdemo: stop the demo being played, and the loop");
+}
+
+void Engine::start_demo_loop(const CommandArgs& args) {
+    if (args.argc() < 2) return print("usage: startdemos <demo1> [demo2 ...]");
+    std::vector<std::string> present;
+    std::vector<std::string> absent;
+    for (size_t i = 1; i < args.argc(); ++i) {
+        const std::string& name = args.argv(i);
+        (demo_->exists(name) ? present : absent).push_back(name);
+    }
+    for (const std::string& name : absent) print("startdemos: " + name + " is not here, skipped");
+    if (present.empty() && vfs_) {
+        for (const std::string& path : vfs_->list("", "dem")) {
+            if (path.find('/') == std::string::npos) present.push_back(without_extension(path));
+        }
+        if (!present.empty()) print("startdemos: none of them is here; the game's own demos loop");
+    }
+    if (present.size() > kMaxLoopDemos) present.resize(kMaxLoopDemos);
+    std::string line = std::to_string(present.size()) + " demo(s) in loop:";
+    for (const std::string& name : present) line += " " + name;
+    print(line);
+    demo_loop_.set(std::move(present));
+    // Quake starts the loop only when nothing else runs (a +map or +timedemo came first).
+    if (!demo_->active() && !quit_) play_next_loop_demo();
+}
+
+void Engine::play_next_loop_demo() {
+    const std::string name = demo_loop_.next();
+    if (name.empty()) return;
+    if (std::string why = demo_->start(name, DemoMode::Playback); !why.empty()) {
+        print("demos: " + why + "; the loop stops");
+        demo_loop_.set_playing(false);
+        return;
+    }
+    show_showroom(false);
+    demo_loop_.set_playing(true);
+}
+
+}  // namespace nq
