@@ -99,8 +99,9 @@ TEST(EngineStartup, WithoutPlusCommandsTheMainMenuShowsOverTheDemoLoop) {
                "con_notifytime 0\ndemo_at 30 \"screenshot " + shot + "; quit\"\n");
     ProcessResult r = run_nprquake({"-userdir", user, "-basedir", data_root(), "-game", "lq1",
                                     "-width", "320", "-height", "240"},
-                                   dir.path());
-    ASSERT_EQ(r.exit_code, 0) << r.describe();
+                                   dir.path(), 300);
+    ASSERT_EQ(r.exit_code, 0) << r.describe() << "\nstdout tail:\n"
+                              << r.out.substr(r.out.size() > 3000 ? r.out.size() - 3000 : 0);
     ASSERT_FALSE(r.timed_out);
     EXPECT_NE(r.out.find("demo(s) in loop"), std::string::npos) << r.out;
     RgbImage image;
