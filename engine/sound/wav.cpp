@@ -73,11 +73,11 @@ Format read_format(const ByteReader& file, const Chunk& fmt) {
 // counting its 8-byte header).
 std::optional<int> read_loop_start(const ByteReader& file, const Chunk& cue) {
     ByteReader r = file.sub(cue.offset, cue.size, "cue chunk");
-    if (cue.size < 24) return std::nullopt;
-    if (r.u32() == 0) return std::nullopt;  // no cue points
-    r.skip(20);                             // id, position, chunk id, chunk start, block start
+    if (cue.size < 28) return std::nullopt;  // no complete cue point
+    if (r.u32() == 0) return std::nullopt;   // no cue points
+    r.skip(20);                              // id, position, chunk id, chunk start, block start
     const uint32_t start = r.u32();
-    if (start > 0x7fffffffu) r.fail_at(20, "loop start " + std::to_string(start));
+    if (start > 0x7fffffffu) r.fail_at(24, "loop start " + std::to_string(start));
     return int(start);
 }
 
@@ -129,7 +129,7 @@ WavSound parse(ByteReader& r) {
     std::optional<int> start = read_loop_start(r, *cue);
     if (!start) return wav;
     if (size_t(*start) >= wav.samples.size()) {
-        r.fail_at(cue->offset + 20, "loop start " + std::to_string(*start) + " past the " +
+        r.fail_at(cue->offset + 24, "loop start " + std::to_string(*start) + " past the " +
                                         std::to_string(wav.samples.size()) + " samples");
     }
     wav.loop_start = *start;

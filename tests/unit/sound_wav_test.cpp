@@ -99,6 +99,14 @@ TEST(SoundWav, MalformedFilesNameFileOffsetAndProblem) {
     EXPECT_EQ(c.error().offset, 96u);
     EXPECT_NE(c.error().message.find("loop length 100"), std::string::npos);
 
+    SynthWav late_loop = w;
+    late_loop.loop_start = 50;  // past the 10 samples
+    auto d = parse_wav(write_wav(late_loop), "sound/u.wav");
+    ASSERT_FALSE(d);
+    // The cue chunk's data starts at 44; its first point's sample offset is 24 bytes in.
+    EXPECT_EQ(d.error().offset, 68u);
+    EXPECT_NE(d.error().message.find("loop start 50"), std::string::npos);
+
     SynthWav no_fmt = w;
     no_fmt.write_fmt = false;
     EXPECT_FALSE(parse_wav(write_wav(no_fmt), "sound/w.wav"));
