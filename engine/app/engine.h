@@ -160,7 +160,7 @@ class Engine {
     SoundCvars sound_cvars_;
     std::unique_ptr<SoundSystem> sound_;
     ClientSoundFeed sound_feed_;
-    Listener listener_;  // the view drawn last
+    Listener listener_;            // the view drawn last
     bool sound_disabled_ = false;  // -nosound, or no device could be opened
     uint32_t sound_demo_starts_ = 0;
     bool sound_demo_active_ = false;

@@ -125,8 +125,7 @@ std::optional<std::string> ClientState::apply(const ServerMessage& message) {
                 sound_events_.push({SoundEvent::Kind::Stop, m.entity, m.channel, 0, 0, 0, {}});
             } else if constexpr (is_one_of<T, svc::SpawnStaticSound, svc::SpawnStaticSound2>) {
                 sound_events_.push({SoundEvent::Kind::Static, 0, 0, m.fields.sound,
-                                    float(m.fields.volume), m.fields.attenuation,
-                                    m.fields.origin});
+                                    float(m.fields.volume), m.fields.attenuation, m.fields.origin});
             } else if constexpr (std::is_same_v<T, svc::CdTrack>) {
                 cd_track_ = m.track;
                 ++cd_track_messages_;
