@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   clang libclang-rt-14-dev          # libFuzzer targets and the fuzz preset
   libsdl2-dev libepoxy-dev libglm-dev
+  libvorbis-dev                     # music: Ogg Vorbis tracks (vorbisfile)
   libopenmesh-dev                   # half-edge meshes for adjacency recovery
   libgtest-dev
   fteqcc                            # compiles the QuakeC test programs (tests/qc)

@@ -69,6 +69,7 @@ std::string DemoSession::start(const std::string& name, DemoMode mode) {
     name_ = name;
     mode_ = mode;
     generation_ = 0;
+    ++starts_;
     paused_ = false;
     return {};
 }
@@ -80,6 +81,7 @@ void DemoSession::start_game(std::unique_ptr<LiveGame> game, const std::string& 
     name_ = map;
     mode_ = DemoMode::Playback;
     generation_ = 0;
+    ++starts_;
     paused_ = false;
 }
 

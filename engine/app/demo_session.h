@@ -55,6 +55,8 @@ class DemoSession {
     FrameStatus frame(double frame_time, const MoveCommand* cmd = nullptr);
 
     const std::string& name() const { return name_; }
+    // +1 for every demo or game started: what listens to the client knows a new one began.
+    uint32_t starts() const { return starts_; }
     DemoMode mode() const { return mode_; }
     ClientState& client() { return *client_; }
     Level& level() { return level_; }
@@ -74,6 +76,7 @@ class DemoSession {
     std::string name_;
     DemoMode mode_ = DemoMode::Playback;
     uint32_t generation_ = 0;
+    uint32_t starts_ = 0;
     bool paused_ = false;
     std::string console_line_;  // printed text not yet ended by a newline
     std::string user_dir_;

@@ -42,6 +42,7 @@ Engine::Engine(const CommandLine& command_line)
 Engine::~Engine() {
     stop_recording();
     menu_.reset();
+    sound_.reset();  // the device's callback stops before anything it reads goes
     demo_.reset();
     dispatch_.reset();
     plugins_.reset();
@@ -107,6 +108,7 @@ bool Engine::start() {
          "menu scale on Quake's 320x200 menu canvas (limited to what fits the screen)", 1.0f,
          10.0f});
     register_game_cvars();
+    register_sound();
     input_ = std::make_unique<PlayerInput>(host_.commands());
     cvars_.gamma = host_.cvars().register_cvar(
         {"gamma", "1", kCvarArchive,
@@ -303,6 +305,7 @@ void Engine::frame() {
         }
     }
     render(frame_time);
+    update_sound(frame_time);
     if (first_frame_seconds_ < 0) {
         first_frame_seconds_ = seconds() - start_seconds_;
         print("start-up to first frame: " + std::to_string(first_frame_seconds_) + " s");
@@ -404,6 +407,7 @@ void Engine::render_demo(double real_time, float frame_time) {
     settings.view_model_lift =
         cvars_.viewmodel_quake->value() != 0 ? view_model_lift_for(hud_->viewsize()) : 0.0f;
     ViewResult view = compute_view(demo_->client(), view_state_, settings);
+    listener_ = listener_for_view(view.origin, view.angles, demo_->client().view_entity());
     scene_.set_occlusion_culling(cvars_.occlusion->value() != 0 && !multisampled_screen_);
     const nqr_frame& frame =
         scene_.build(level, demo_->client(), view, camera_for(view), real_time, frame_time);

@@ -33,6 +33,9 @@
 #include "hud/hud.h"
 #include "menu/menu.h"
 #include "plugin/plugin_host.h"
+#include "sound/client_sound_feed.h"
+#include "sound/sound_commands.h"
+#include "sound/sound_system.h"
 #include "video/frame_stats.h"
 #include "video/frame_throttle.h"
 #include "video/gamma_pass.h"
@@ -121,6 +124,10 @@ class Engine {
     void register_demo_loop_commands();
     void start_demo_loop(const CommandArgs& args);
     void play_next_loop_demo();
+    // engine_sound.cpp
+    void register_sound();
+    void open_sound();  // the first frame sound is wanted: the device and the mixer
+    void update_sound(double frame_time);
 
     // engine_models.cpp
     void register_level_models(Level& level);
@@ -174,6 +181,14 @@ class Engine {
     GameCvars game_cvars_;
     SceneBuilder scene_;
     ViewState view_state_;
+    // Sound: none at all with -nosound (no device, no mixer); opened when first wanted.
+    SoundCvars sound_cvars_;
+    std::unique_ptr<SoundSystem> sound_;
+    ClientSoundFeed sound_feed_;
+    Listener listener_;            // the view drawn last
+    bool sound_disabled_ = false;  // -nosound, or no device could be opened
+    uint32_t sound_demo_starts_ = 0;
+    bool sound_demo_active_ = false;
     std::unique_ptr<Showroom> showroom_;
     bool showroom_models_registered_ = false;
     bool level_models_registered_ = false;

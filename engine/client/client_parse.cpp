@@ -118,9 +118,19 @@ std::optional<std::string> ClientState::apply(const ServerMessage& message) {
                 skybox_ = m.name;
             } else if constexpr (std::is_same_v<T, svc::Fog>) {
                 fog_ = m;
+            } else if constexpr (std::is_same_v<T, svc::Sound>) {
+                sound_events_.push({SoundEvent::Kind::Start, m.entity, m.channel, m.sound,
+                                    float(m.volume) / 255.0f, m.attenuation, m.origin});
+            } else if constexpr (std::is_same_v<T, svc::StopSound>) {
+                sound_events_.push({SoundEvent::Kind::Stop, m.entity, m.channel, 0, 0, 0, {}});
+            } else if constexpr (is_one_of<T, svc::SpawnStaticSound, svc::SpawnStaticSound2>) {
+                sound_events_.push({SoundEvent::Kind::Static, 0, 0, m.fields.sound,
+                                    float(m.fields.volume), m.fields.attenuation, m.fields.origin});
+            } else if constexpr (std::is_same_v<T, svc::CdTrack>) {
+                cd_track_ = m.track;
+                ++cd_track_messages_;
             }
-            // Sounds, CD tracks, the sell screen and nops change nothing the client draws:
-            // they are only counted.
+            // The sell screen and nops change nothing the client draws: they are only counted.
             return std::nullopt;
         },
         message);

@@ -34,6 +34,7 @@ void ClientState::clear_for_new_level() {
     precache_models_ = 1;
     client_models_ = {};
     sound_names_.assign(1, std::string());
+    sound_events_.clear();
     model_info_.assign(1, ModelInfo{});
     time_ = old_time_ = 0;
     message_times_ = {};

@@ -1,7 +1,8 @@
 // The client state of demo playback: what the server's messages have said (level, precache
 // lists, entities and their baselines, static entities, light styles, player data, scoreboard,
 // intermission) and what the client derives from it for each rendered frame (interpolated
-// entities, effects, particles, dynamic lights). Plain C++: no rendering, no sound, no files.
+// entities, effects, particles, dynamic lights). Plain C++: no rendering, no sound, no files:
+// sounds and the CD track are recorded for the engine's sound system to take.
 //
 // Per frame the engine (or DemoPlayer) calls advance_clock(), applies the messages that are
 // due (receive_block_angles() + apply()), then prepare_frame(); after that compute_view() and
@@ -28,6 +29,7 @@
 #include "client/particle_effects.h"
 #include "client/particle_system.h"
 #include "client/screen_flashes.h"
+#include "client/sound_events.h"
 #include "client/temp_entity_buffer.h"
 #include "formats/server_message.h"
 
@@ -195,6 +197,15 @@ class ClientState {
     std::vector<std::string> take_center_prints() { return std::exchange(center_prints_, {}); }
     std::vector<std::string> take_stuff_text() { return std::exchange(stuff_text_, {}); }
 
+    // ---- sounds (the engine's sound system plays them)
+    // Sounds started, stopped or placed since clear_sound_events(); a new level drops those of
+    // the level before.
+    std::span<const SoundEvent> sound_events() const { return sound_events_.events(); }
+    void clear_sound_events() { sound_events_.clear(); }
+    // The last svc_cdtrack: its track, and a count of them so a repeated track is seen too.
+    int cd_track() const { return cd_track_; }
+    uint32_t cd_track_messages() const { return cd_track_messages_; }
+
     // ---- bookkeeping
     uint32_t message_count(int kind) const;  // per message kind, ignored kinds included
     const std::vector<std::string>& warnings() const { return warnings_; }
@@ -275,6 +286,10 @@ class ClientState {
     ScreenFlashes flashes_;
     std::string skybox_;
     svc::Fog fog_;
+
+    SoundEventQueue sound_events_;
+    int cd_track_ = 0;
+    uint32_t cd_track_messages_ = 0;
 
     std::vector<std::string> console_text_, center_prints_, stuff_text_;
     std::array<uint32_t, 256> message_counts_{};
