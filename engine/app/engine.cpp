@@ -196,6 +196,7 @@ bool Engine::start() {
         return std::string(bytes->begin(), bytes->end());
     });
     host_.queue_startup(command_line_);
+    queue_benchmark();
     host_.commands().execute();  // config.cfg, autoexec.cfg, then the +commands
     load_initial_plugin();
     if (!vfs_ && !demo_->active()) show_showroom(true);
@@ -302,6 +303,7 @@ void Engine::frame() {
     if (timing) frame_times_.record(seconds() - now);
     if (game_timing) game_frame_times_.record(seconds() - now);
     ++frame_count_;
+    update_command_line_job();
     if (!timing && cvars_.host_maxfps->value() > 0) {
         double budget = 1.0 / cvars_.host_maxfps->value() - (seconds() - now);
         if (budget > 0) std::this_thread::sleep_for(std::chrono::duration<double>(budget));
