@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
 # Interleaved timedemo benchmark: our engine (one or more renderer plugins) against QuakeSpasm on
 # the same data, demos and resolutions, in the same run. Runs alternate (A, B, A, B, ...) because
-# these machines' speed drifts; report ratios, not absolute fps.
+# these machines' speed drifts; report ratios, not absolute fps. demos/benchmark.sh runs this,
+# then the style gallery and the report with charts.
 #
 # usage: demos/bench_timedemo.sh [--rounds N] [--plugins "classic technical"] [--demos "demo demo2"]
-#                                [--res "640x480 1024x768"] [--no-peer] [--out DIR]
+#                                [--res "640x480 1024x768"] [--no-peer | --peer quakespasm]
+#                                [--out DIR]
 # env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
-# Output: one line per run on stdout, a JSON Lines file and a Markdown summary in --out
-# (default build/bench), each run's -benchjson record included.
+# Output: one line per run on stdout with a progress count and an estimate of the time left;
+# in --out (default build/bench): results.jsonl (one record per run: fps, the -benchjson record
+# with the frame-time percentiles, start-up time, exit status; a run that failed has "failed":
+# true and fps null, never a number), frames/ (every run's frame times, -benchframes), logs/
+# (every run's output) and summary.md.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 data=${NPRQ_DATA:-$root/../shared/data}
@@ -25,6 +30,7 @@ while [ $# -gt 0 ]; do
         --demos) demos=$2; shift 2 ;;
         --res) resolutions=$2; shift 2 ;;
         --no-peer) peer=0; shift ;;
+        --peer) [ "$2" = quakespasm ] && peer=1 || peer=0; shift 2 ;;
         --out) out=$2; shift 2 ;;
         *) echo "bench_timedemo.sh: unknown option $1" >&2; exit 2 ;;
     esac
@@ -36,61 +42,76 @@ peer_script=$root/../shared/tools/quakespasm_timedemo.sh
 if [ $peer = 1 ] && [ ! -x "$peer_script" ]; then
     echo "bench_timedemo.sh: $peer_script not found; use --no-peer" >&2; exit 1
 fi
-mkdir -p "$out"
+mkdir -p "$out/frames" "$out/logs" "$out/user"
 results=$out/results.jsonl
 : > "$results"
 
-run_ours() {  # plugin demo WxH
-    local w=${3%x*} h=${3#*x} rec=$out/rec.json line
-    rm -f "$rec"
-    line=$(SDL_VIDEODRIVER=offscreen "$engine" -basedir "$data" -game lq1 -width "$w" -height "$h" \
-        -window -benchjson "$rec" +r_plugin "$1" +timedemo "$2" +quit 2>&1 |
-        grep -E '^[0-9]+ frames' | tail -1) || true
-    local fps; fps=$(echo "$line" | awk '{print $5}')
-    echo "nprquake:$1 $2 $3 ${fps:-FAIL}"
-    printf '{"engine":"nprquake","plugin":"%s","demo":"%s","res":"%s","fps":%s,"record":%s}\n' \
-        "$1" "$2" "$3" "${fps:-null}" "$(cat "$rec" 2>/dev/null || echo null)" >> "$results"
+# A JSON string (or null for an empty value) for the few free-text fields.
+json_string() {
+    if [ -z "$1" ]; then echo null; return; fi
+    printf '"%s"' "$(printf '%s' "$1" | sed 's/\\/\\\\/g; s/"/\\"/g' | tr -d '\000-\037')"
 }
 
-run_peer() {  # demo WxH
-    local line fps
-    line=$("$peer_script" "$1" "$2" 1 2>/dev/null | tail -1)
+run_ours() {  # round plugin demo WxH
+    local round=$1 plugin=$2 demo=$3 res=$4
+    local w=${res%x*} h=${res#*x} name="nprquake_${plugin}_${demo}_${res}_r${round}"
+    local rec=$out/rec.json frames=$out/frames/$name.txt log=$out/logs/$name.log status=0
+    rm -f "$rec" "$frames"
+    SDL_VIDEODRIVER=offscreen "$engine" -userdir "$out/user" -basedir "$data" -game lq1 \
+        -width "$w" -height "$h" -window -benchjson "$rec" -benchframes "$frames" \
+        -benchmark "$demo" -benchmarkruns 1 +r_plugin "$plugin" > "$log" 2>&1 || status=$?
+    local line fps startup failure=""
+    line=$(grep -E '^[0-9]+ frames' "$log" | tail -1) || true
+    fps=$(echo "$line" | awk '{print $5}')
+    startup=$(sed -n 's/^start-up to first frame: \([0-9.]*\) s$/\1/p' "$log" | head -1)
+    if [ $status != 0 ] || [ -z "$fps" ] || [ ! -s "$rec" ]; then
+        failure=$(grep -E 'failed|cannot|error' "$log" | head -1)
+        failure=${failure:-exit status $status, no timedemo line}
+        fps=""
+    fi
+    echo "nprquake:$plugin $demo $res ${fps:-FAILED${failure:+ ($failure)}}"
+    printf '{"engine":"nprquake","plugin":"%s","demo":"%s","res":"%s","round":%s,"fps":%s,"failed":%s,"exit_status":%s,"failure":%s,"startup_s":%s,"frames_file":%s,"record":%s}\n' \
+        "$plugin" "$demo" "$res" "$round" "${fps:-null}" "$([ -n "$fps" ] && echo false || echo true)" \
+        "$status" "$(json_string "$failure")" "${startup:-null}" \
+        "$([ -n "$fps" ] && json_string "frames/$name.txt" || echo null)" \
+        "$([ -n "$fps" ] && cat "$rec" || echo null)" >> "$results"
+}
+
+run_peer() {  # round demo WxH
+    local round=$1 demo=$2 res=$3 line fps status=0
+    line=$("$peer_script" "$demo" "$res" 1 2>"$out/logs/quakespasm_${demo}_${res}_r$round.log" | tail -1) ||
+        status=$?
     fps=$(echo "$line" | awk '{print $4}')
-    [ "$fps" = FAIL ] && fps=""
-    echo "quakespasm $1 $2 ${fps:-FAIL}"
-    printf '{"engine":"quakespasm","plugin":"","demo":"%s","res":"%s","fps":%s}\n' \
-        "$1" "$2" "${fps:-null}" >> "$results"
+    case $fps in ''|FAIL|*[!0-9.]*) fps="" ;; esac
+    echo "quakespasm $demo $res ${fps:-FAILED}"
+    printf '{"engine":"quakespasm","plugin":"","demo":"%s","res":"%s","round":%s,"fps":%s,"failed":%s,"exit_status":%s,"failure":%s,"startup_s":null,"frames_file":null,"record":null}\n' \
+        "$demo" "$res" "$round" "${fps:-null}" "$([ -n "$fps" ] && echo false || echo true)" \
+        "$status" "$([ -n "$fps" ] && echo null || json_string "no timedemo line (see logs/)")" \
+        >> "$results"
+}
+
+count() { set -- $1; echo $#; }
+per_round=$(( $(count "$resolutions") * $(count "$demos") * ($(count "$plugins") + peer) ))
+total=$(( rounds * per_round ))
+done_runs=0
+started=$SECONDS
+progress() {  # what ran last
+    done_runs=$((done_runs + 1))
+    local elapsed=$((SECONDS - started))
+    local left=$(( elapsed * (total - done_runs) / done_runs ))
+    printf '[%d/%d, %dm%02ds elapsed, ~%dm%02ds left] %s\n' "$done_runs" "$total" \
+        $((elapsed / 60)) $((elapsed % 60)) $((left / 60)) $((left % 60)) "$1"
 }
 
 for r in $(seq 1 "$rounds"); do
     for res in $resolutions; do
         for demo in $demos; do
-            for p in $plugins; do run_ours "$p" "$demo" "$res"; done
-            [ $peer = 1 ] && run_peer "$demo" "$res"
+            for p in $plugins; do progress "$(run_ours "$r" "$p" "$demo" "$res")"; done
+            if [ $peer = 1 ]; then progress "$(run_peer "$r" "$demo" "$res")"; fi
         done
     done
 done
+rm -f "$out/rec.json"
 
-python3 - "$results" "$out/summary.md" <<'PY'
-import json, statistics, sys
-rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
-groups = {}
-for r in rows:
-    key = (r["demo"], r["res"])
-    name = r["engine"] + (":" + r["plugin"] if r["plugin"] else "")
-    if r["fps"] is not None:
-        groups.setdefault(key, {}).setdefault(name, []).append(r["fps"])
-lines = ["| demo | resolution | engine | runs | median fps | ratio vs quakespasm | ratio vs classic |",
-         "|---|---|---|---|---|---|---|"]
-for (demo, res), engines in sorted(groups.items()):
-    peer = statistics.median(engines["quakespasm"]) if "quakespasm" in engines else None
-    classic = statistics.median(engines["nprquake:classic"]) if "nprquake:classic" in engines else None
-    for name, fps in sorted(engines.items()):
-        med = statistics.median(fps)
-        ratio = "%.2fx" % (med / peer) if peer else "-"
-        vs_classic = "%.2fx" % (med / classic) if classic and name.startswith("nprquake:") else "-"
-        lines.append("| %s | %s | %s | %d | %.1f | %s | %s |" % (demo, res, name, len(fps), med, ratio, vs_classic))
-open(sys.argv[2], "w").write("\n".join(lines) + "\n")
-print("\n".join(lines))
-PY
+/usr/bin/python3 "$root/demos/bench_report.py" --summary-only "$out"
 echo "bench_timedemo.sh: results in $results and $out/summary.md"

@@ -13,6 +13,7 @@ packages=(
   fteqcc                            # compiles the QuakeC test programs (tests/qc)
   libpng-dev zlib1g-dev             # screenshots (PNG)
   libgl1-mesa-dri libegl-mesa0      # headless OpenGL (llvmpipe) for tests
+  python3-matplotlib                # demos/bench_report.py: the benchmark report's charts
 )
 
 missing=()

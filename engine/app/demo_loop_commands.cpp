@@ -60,8 +60,9 @@ void Engine::start_demo_loop(const CommandArgs& args) {
     for (const std::string& name : present) line += " " + name;
     print(line);
     demo_loop_.set(std::move(present));
-    // Quake starts the loop only when nothing else runs (a +map or +timedemo came first).
-    if (!demo_->active() && !quit_) play_next_loop_demo();
+    // Quake starts the loop only when nothing else runs (a +map or +timedemo came first);
+    // -benchmark's timedemo is queued behind quake.rc and is the job.
+    if (!demo_->active() && !quit_ && !options_.benchmark) play_next_loop_demo();
 }
 
 void Engine::play_next_loop_demo() {

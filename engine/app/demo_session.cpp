@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "common/file_io.h"
+#include "formats/dem.h"
 #include "fs/vfs.h"
 
 namespace nq {
@@ -14,6 +15,27 @@ ModelCache::FileReader vfs_reader(const Vfs* vfs) {
         if (!vfs) return Error{path, 0, "no game data mounted"};
         return vfs->read(path);
     };
+}
+
+// Playback forgives a recording cut mid-block (many real demos are); a timedemo is a
+// measurement of the whole recording, so a cut one is refused rather than timed in part.
+Result<DemoPlayer> open_player(std::span<const uint8_t> bytes, const std::string& path,
+                               DemoMode mode) {
+    DemParseOptions options;
+    options.allow_truncated_tail = mode != DemoMode::TimeDemo;
+    auto demo = parse_dem(bytes, path, options);
+    if (!demo) return demo.error();
+    return DemoPlayer(std::move(demo.value()), path, mode);
+}
+
+// Every demo starts from the same random stream (particle spread, light flicker, animation
+// phases), so two timedemos of one demo draw the same frames.
+constexpr uint64_t kDemoRandomSeed = 1;
+
+std::unique_ptr<ClientState> seeded_client() {
+    ClientSettings settings;
+    settings.random_seed = kDemoRandomSeed;
+    return std::make_unique<ClientState>(settings);
 }
 
 }  // namespace
@@ -61,9 +83,9 @@ std::string DemoSession::start(const std::string& name, DemoMode mode) {
         if (!read) return "cannot play demo \"" + name + "\": " + read.error().message;
         bytes = std::move(read.value());
     }
-    auto player = DemoPlayer::open(*bytes, path, mode);
+    auto player = open_player(*bytes, path, mode);
     if (!player) return player.error().to_string();
-    client_ = std::make_unique<ClientState>();
+    client_ = seeded_client();
     player_.emplace(std::move(player.value()));
     for (const auto& w : player_->warnings()) callbacks_.print(path + ": " + w);
     name_ = name;
@@ -71,6 +93,7 @@ std::string DemoSession::start(const std::string& name, DemoMode mode) {
     generation_ = 0;
     ++starts_;
     paused_ = false;
+    failure_.clear();
     return {};
 }
 
@@ -83,6 +106,7 @@ void DemoSession::start_game(std::unique_ptr<LiveGame> game, const std::string& 
     generation_ = 0;
     ++starts_;
     paused_ = false;
+    failure_.clear();
 }
 
 void DemoSession::stop() {
@@ -106,29 +130,31 @@ FrameStatus DemoSession::frame(double frame_time, const MoveCommand* cmd) {
                                : player_->read_frame(*client_, frame_time);
     if (client_->generation() != generation_) {
         generation_ = client_->generation();
-        on_new_level();
+        if (!on_new_level()) status = FrameStatus::Ended;
     }
     if (status == FrameStatus::Playing) {
         client_->prepare_frame(live_ ? LerpMode::Interpolate : player_->lerp_mode());
     }
     drain_client_text();
-    if (status == FrameStatus::Ended) {
+    if (status == FrameStatus::Ended && failure_.empty()) {
         const std::optional<Error>& error = live_ ? live_->error() : player_->error();
-        if (error)
-            callbacks_.print((live_ ? "game stopped: " : "demo stopped: ") + error->to_string());
+        if (error) failure_ = error->to_string();
+        if (error) callbacks_.print((live_ ? "game stopped: " : "demo stopped: ") + failure_);
     }
     return status;
 }
 
-void DemoSession::on_new_level() {
+bool DemoSession::on_new_level() {
     if (level_.loaded() && callbacks_.level_unloading) callbacks_.level_unloading();
     auto loaded = level_.load(*client_);
     for (const auto& w : level_.take_warnings()) callbacks_.print("warning: " + w);
     if (!loaded) {
-        callbacks_.print("cannot load level: " + loaded.error().to_string());
-        return;
+        failure_ = "cannot load level: " + loaded.error().to_string();
+        callbacks_.print(failure_);
+        return false;
     }
     if (callbacks_.level_loaded) callbacks_.level_loaded(level_);
+    return true;
 }
 
 void DemoSession::drain_client_text() {

@@ -54,6 +54,10 @@ class DemoSession {
     // In a game, `cmd` is the player's command for the frame (required then).
     FrameStatus frame(double frame_time, const MoveCommand* cmd = nullptr);
 
+    // Why the session ended early ("" while it plays or when it ended as recorded): a message
+    // it could not decode, or a level it could not load (nothing could be drawn).
+    const std::string& failure() const { return failure_; }
+
     const std::string& name() const { return name_; }
     // +1 for every demo or game started: what listens to the client knows a new one began.
     uint32_t starts() const { return starts_; }
@@ -64,7 +68,7 @@ class DemoSession {
     bool level_ready() const { return level_.loaded() && client_ && client_->signed_on(); }
 
   private:
-    void on_new_level();
+    bool on_new_level();  // false when the level cannot load
     void drain_client_text();
 
     const Vfs* vfs_;
@@ -78,6 +82,7 @@ class DemoSession {
     uint32_t generation_ = 0;
     uint32_t starts_ = 0;
     bool paused_ = false;
+    std::string failure_;
     std::string console_line_;  // printed text not yet ended by a newline
     std::string user_dir_;
 };

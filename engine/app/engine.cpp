@@ -206,11 +206,14 @@ bool Engine::start() {
         return std::string(bytes->begin(), bytes->end());
     });
     host_.queue_startup(command_line_);
+    queue_benchmark();
     host_.commands().execute();  // quake.rc (or config.cfg, autoexec.cfg), the +commands
     load_initial_plugin();
     if (!vfs_ && !demo_->active()) show_showroom(true);
     // Quake's start without +commands: the menu, over the demo loop if there is one.
-    if (vfs_ && command_line_.command_text().empty() && !quit_) menu_->open(MenuScreen::Main);
+    if (vfs_ && command_line_.command_text().empty() && !options_.benchmark && !quit_) {
+        menu_->open(MenuScreen::Main);
+    }
     last_frame_seconds_ = seconds();
     return true;
 }
@@ -319,6 +322,7 @@ void Engine::frame() {
     if (timing) frame_times_.record(seconds() - now);
     if (game_timing) game_frame_times_.record(seconds() - now);
     ++frame_count_;
+    update_command_line_job();
     if (!timing && cvars_.host_maxfps->value() > 0) {
         double budget = 1.0 / cvars_.host_maxfps->value() - (seconds() - now);
         if (budget > 0) std::this_thread::sleep_for(std::chrono::duration<double>(budget));

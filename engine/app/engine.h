@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/demo_loop.h"
+#include "app/benchmark_runs.h"
 #include "app/demo_session.h"
 #include "app/engine_menu.h"
 #include "app/engine_server_host.h"
@@ -152,7 +153,21 @@ class Engine {
     void start_demo(const std::string& name, DemoMode mode);
     void end_demo();
     void pause_demo(const CommandArgs& args);
-    void report_timedemo();
+    // A timedemo ended: its report, or (when it failed) why, and never a frame rate then.
+    void finish_timedemo();
+    std::string timedemo_failure(const FrameSummary& summary) const;
+    void timedemo_failed(const std::string& name, const std::string& why);
+    void report_timedemo(const FrameSummary& summary);
+    void write_frame_times(const FrameSummary& summary);
+
+    // engine_benchmark.cpp: -benchmark DEMO -benchmarkruns N
+    void queue_benchmark();
+    void benchmark_run_done(const FrameSummary& summary);
+    void benchmark_failed(const std::string& why);
+    void log_benchmark(const std::string& failure);
+    // The command line's commands are running (a timedemo they start is the process's job:
+    // its failure is the exit status); false once they and the demos they started are done.
+    void update_command_line_job();
     void screenshot(const std::string& name);
     void swap_plugin(const std::string& name);
 
@@ -197,6 +212,9 @@ class Engine {
     FrameTimeRecorder frame_times_;
     FrameTimeRecorder game_frame_times_{size_t{1} << 16};  // host frames of the running game
     std::string after_demo_text_;
+    std::optional<BenchmarkRuns> benchmark_;
+    bool command_line_job_ = true;
+    bool demo_is_job_ = false;  // the demo playing was started by the command line's commands
     std::vector<std::pair<uint64_t, std::string>> demo_schedule_;  // demo_at FRAME "commands"
     double start_seconds_ = 0;
     double last_frame_seconds_ = 0;

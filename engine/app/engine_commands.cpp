@@ -7,6 +7,7 @@
 #include "app/engine.h"
 #include "host/number_text.h"
 #include "video/bench_record.h"
+#include "video/frame_times_file.h"
 #include "video/screenshot.h"
 
 namespace nq {
@@ -109,9 +110,11 @@ void Engine::swap_plugin(const std::string& name) {
 void Engine::start_demo(const std::string& name, DemoMode mode) {
     std::string why = demo_->start(name, mode);
     if (!why.empty()) {
-        print(why);
-        return;
+        if (mode != DemoMode::TimeDemo) return print(why);
+        demo_is_job_ = command_line_job_;
+        return timedemo_failed(name, why);
     }
+    demo_is_job_ = command_line_job_;
     show_showroom(false);
     demo_loop_.set_playing(false);  // a demo chosen by hand ends the attract loop
     // The rest of the command line ("+timedemo demo +quit") waits for the demo to end.
@@ -122,7 +125,8 @@ void Engine::start_demo(const std::string& name, DemoMode mode) {
 
 void Engine::end_demo() {
     if (!demo_->active()) return;
-    if (demo_->mode() == DemoMode::TimeDemo) report_timedemo();
+    const bool timedemo = demo_->mode() == DemoMode::TimeDemo && !demo_->live();
+    if (timedemo) finish_timedemo();
     demo_->stop();
     demo_loop_.set_playing(false);
     demo_schedule_.clear();
@@ -131,6 +135,14 @@ void Engine::end_demo() {
         host_.commands().insert_text(after_demo_text_);
         after_demo_text_.clear();
     }
+    if (timedemo && benchmark_ && !benchmark_->complete() && !quit_) queue_benchmark();
+}
+
+void Engine::update_command_line_job() {
+    if (!command_line_job_ || !host_.commands().buffer_empty() || !after_demo_text_.empty()) return;
+    // The attract loop (quake.rc's startdemos) is not the command line's job.
+    if (demo_->active() && !demo_->live() && !demo_loop_.playing()) return;
+    command_line_job_ = false;
 }
 
 void Engine::pause_demo(const CommandArgs& args) {
@@ -141,8 +153,39 @@ void Engine::pause_demo(const CommandArgs& args) {
     print(on ? "paused" : "unpaused");
 }
 
-void Engine::report_timedemo() {
-    FrameSummary s = frame_times_.summarize();
+void Engine::finish_timedemo() {
+    const FrameSummary summary = frame_times_.summarize();
+    const std::string failure = timedemo_failure(summary);
+    if (!failure.empty()) return timedemo_failed(demo_->name(), failure);
+    report_timedemo(summary);
+    write_frame_times(summary);
+    if (benchmark_) benchmark_run_done(summary);
+}
+
+std::string Engine::timedemo_failure(const FrameSummary& summary) const {
+    if (!demo_->failure().empty()) return demo_->failure();
+    if (summary.frames == 0) return "no frame was played";
+    return {};
+}
+
+// Said in the console during play; the process's exit status too when the command line ran it.
+void Engine::timedemo_failed(const std::string& name, const std::string& why) {
+    print("timedemo " + name + " failed (no frame rate reported): " + why);
+    if (demo_is_job_) exit_status_ = 1;
+    if (benchmark_) benchmark_failed(why);
+}
+
+void Engine::write_frame_times(const FrameSummary& summary) {
+    if (!options_.bench_frames) return;
+    FrameTimesHeader header{demo_->name(), plugins_->active_name(), window_->drawable_width(),
+                            window_->drawable_height()};
+    std::span<const double> counted = frame_times_.stored_seconds().subspan(1);
+    if (counted.size() < summary.frames) print("benchframes: more frames than were stored");
+    std::string error = append_frame_times(*options_.bench_frames, header, counted);
+    if (!error.empty()) print("benchframes: " + error);
+}
+
+void Engine::report_timedemo(const FrameSummary& s) {
     print(quake_timedemo_line(s));
     print(format("frame time: median %.2f ms, 95th %.2f ms, 99th %.2f ms; 1%% low %.1f fps",
                  s.median_ms, s.p95_ms, s.p99_ms, s.low1_fps));

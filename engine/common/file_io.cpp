@@ -41,4 +41,14 @@ std::string write_file(const std::string& path, std::span<const uint8_t> bytes) 
     return {};
 }
 
+std::string append_file(const std::string& path, std::string_view text) {
+    FilePtr f(std::fopen(path.c_str(), "ab"));
+    if (!f) return path + ": cannot open for appending: " + std::strerror(errno);
+    if (!text.empty() && std::fwrite(text.data(), 1, text.size(), f.get()) != text.size()) {
+        return path + ": write failed: " + std::strerror(errno);
+    }
+    if (std::fflush(f.get()) != 0) return path + ": write failed: " + std::strerror(errno);
+    return {};
+}
+
 }  // namespace nq

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/result.h"
@@ -16,5 +17,7 @@ inline constexpr uint64_t kMaxFileBytes = 1ull << 30;
 Result<std::vector<uint8_t>> read_file(const std::string& path);
 // Returns an empty string on success, otherwise a message naming the path and the reason.
 std::string write_file(const std::string& path, std::span<const uint8_t> bytes);
+// Appends `text` to the file (created if missing); "" on success, else a message as above.
+std::string append_file(const std::string& path, std::string_view text);
 
 }  // namespace nq

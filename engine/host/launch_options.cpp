@@ -15,19 +15,25 @@ std::optional<std::string> required_value(const CommandLine& line, const std::st
     return value;
 }
 
-std::optional<int> dimension(const CommandLine& line, const std::string& flag,
-                             std::vector<std::string>& errors) {
-    std::optional<std::string> text = required_value(line, flag, "a size in pixels", errors);
+// A whole number in 1..max, or nullopt (with an error when the flag was given).
+std::optional<int> whole_number(const CommandLine& line, const std::string& flag,
+                                const std::string& what, int max,
+                                std::vector<std::string>& errors) {
+    std::optional<std::string> text = required_value(line, flag, what, errors);
     if (!text || text->empty()) return std::nullopt;
     int value = 0;
     auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), value);
-    if (ec != std::errc() || end != text->data() + text->size() || value < 1 ||
-        value > kMaxWindowDimension) {
-        errors.push_back(flag + ": expected a whole number from 1 to " +
-                         std::to_string(kMaxWindowDimension) + ", got \"" + *text + "\"");
+    if (ec != std::errc() || end != text->data() + text->size() || value < 1 || value > max) {
+        errors.push_back(flag + ": expected a whole number from 1 to " + std::to_string(max) +
+                         ", got \"" + *text + "\"");
         return std::nullopt;
     }
     return value;
+}
+
+std::optional<int> dimension(const CommandLine& line, const std::string& flag,
+                             std::vector<std::string>& errors) {
+    return whole_number(line, flag, "a size in pixels", kMaxWindowDimension, errors);
 }
 
 // -game names one directory under basedir, never a path (that could escape basedir).
@@ -60,8 +66,14 @@ LaunchOptions read_launch_options(const CommandLine& line) {
     options.height = dimension(line, "-height", errors);
     options.fullscreen = fullscreen(line);
     options.bench_json = required_value(line, "-benchjson", "a file name", errors);
+    options.benchmark = required_value(line, "-benchmark", "a demo name", errors);
+    options.benchmark_runs =
+        whole_number(line, "-benchmarkruns", "a number of runs", kMaxBenchmarkRuns, errors)
+            .value_or(1);
+    options.bench_frames = required_value(line, "-benchframes", "a file name", errors);
     // A flag given without its value leaves no usable setting behind.
-    for (auto* text : {&options.basedir, &options.game, &options.bench_json}) {
+    for (auto* text : {&options.basedir, &options.game, &options.bench_json, &options.benchmark,
+                       &options.bench_frames}) {
         if (*text && (*text)->empty()) text->reset();
     }
     return options;

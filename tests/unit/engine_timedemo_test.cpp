@@ -1,6 +1,7 @@
 // `timedemo` through the engine binary: it plays the LibreQuake demos to the end, reports
 // Quake's "N frames S seconds F fps" line with the frame count an in-process replay gives,
-// writes the -benchjson record, and survives demos that are missing, cut short or corrupt.
+// writes the -benchjson record, and refuses demos that are missing, cut short, corrupt or
+// whose map is missing: a message, no frame rate, and (run by the command line) exit status 1.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -95,20 +96,32 @@ TEST(EngineTimedemo, BenchJsonGetsOneRecordOfTheRun) {
     EXPECT_NEAR(std::stod(fps[1]), std::stoull(frames[1]) / s, 0.01 * std::stod(fps[1]));
 }
 
-TEST(EngineTimedemo, UnknownDemoIsNamedAndTheEngineCarriesOn) {
+// A timedemo the command line ran failed: the engine ended by itself (after `+quit`), with
+// exit status 1, no sanitizer report, one "timedemo <name> failed" line and no frame rate.
+void expect_failed_timedemo(const ProcessResult& r, const std::string& name) {
+    ASSERT_TRUE(r.spawned) << r.describe();
+    EXPECT_FALSE(r.timed_out) << r.describe();
+    EXPECT_EQ(r.signal, 0) << r.describe();
+    EXPECT_EQ(r.exit_code, 1) << r.describe();
+    EXPECT_EQ(sanitizer_report(r.err), "") << r.describe();
+    EXPECT_EQ(lines_containing(r.out, "timedemo " + name + " failed").size(), 1u) << r.out;
+    EXPECT_TRUE(timedemo_lines(r.out).empty()) << r.out;
+    EXPECT_TRUE(lines_containing(r.out, "frame time:").empty()) << r.out;
+}
+
+TEST(EngineTimedemo, UnknownDemoIsNamedAndTheRunFails) {
     TempDir dir("nq_engine_nodemo");
     auto args = engine_runs::base_args(dir.path(), data_root(), "lq1");
     engine_runs::add(args, {"+timedemo", "no_such_demo", "+quit"});
     ProcessResult r = run_nprquake(args, dir.path(), 60);
-    expect_clean_exit(r);
+    expect_failed_timedemo(r, "no_such_demo");
     auto named = lines_containing(r.out, "\"no_such_demo\"");
     ASSERT_EQ(named.size(), 1u) << r.out;
     EXPECT_NE(named[0].find("not found"), std::string::npos) << named[0];
-    EXPECT_TRUE(timedemo_lines(r.out).empty()) << r.out;
 }
 
 // A game dir with nothing but `demo_bytes` as demo.dem (no palette, no maps: stand-ins).
-ProcessResult timedemo_of(const TempDir& dir, const std::vector<uint8_t>& demo_bytes) {
+ProcessResult timedemo_without_maps(const TempDir& dir, const std::vector<uint8_t>& demo_bytes) {
     std::string game = dir.subdir("base/g");
     EXPECT_EQ(write_file(game + "/demo.dem", demo_bytes), "");
     auto args = engine_runs::base_args(dir.path(), dir.path() + "/base", "g");
@@ -116,7 +129,40 @@ ProcessResult timedemo_of(const TempDir& dir, const std::vector<uint8_t>& demo_b
     return run_nprquake(args, dir.path(), 60);
 }
 
-TEST(EngineTimedemo, TruncatedDemoIsReportedWithFileAndOffsetAndPlaysWhatIsThere) {
+// The LibreQuake game with `demo_bytes` as the user's cut.dem (the user dir is searched first).
+ProcessResult timedemo_of(const TempDir& dir, const std::vector<uint8_t>& demo_bytes) {
+    std::string user_game = dir.subdir("user/lq1");
+    EXPECT_EQ(write_file(user_game + "/cut.dem", demo_bytes), "");
+    auto args = engine_runs::base_args(dir.path(), data_root(), "lq1");
+    engine_runs::add(args, {"+timedemo", "cut", "+quit"});
+    return run_nprquake(args, dir.path(), 120);
+}
+
+TEST(EngineTimedemo, MissingMapFailsTheTimedemoNamingTheMap) {
+    Vfs vfs = mount_lq1();
+    TempDir dir("nq_engine_nomap");
+    ProcessResult r = timedemo_without_maps(dir, read_game_file(vfs, "demo.dem"));
+    expect_failed_timedemo(r, "demo");
+    auto failed = lines_containing(r.out, "timedemo demo failed");
+    ASSERT_EQ(failed.size(), 1u) << r.out;
+    EXPECT_NE(failed[0].find("cannot load level"), std::string::npos) << failed[0];
+    EXPECT_NE(failed[0].find("maps/start.bsp"), std::string::npos) << failed[0];
+}
+
+TEST(EngineTimedemo, MissingMapInAPlayedDemoIsAMessageNotAFailure) {
+    Vfs vfs = mount_lq1();
+    TempDir dir("nq_engine_nomap_play");
+    std::string game = dir.subdir("base/g");
+    ASSERT_EQ(write_file(game + "/demo.dem", read_game_file(vfs, "demo.dem")), "");
+    auto args = engine_runs::base_args(dir.path(), dir.path() + "/base", "g");
+    engine_runs::add(args, {"+playdemo", "demo", "+quit"});
+    ProcessResult r = run_nprquake(args, dir.path(), 60);
+    expect_clean_exit(r);
+    EXPECT_EQ(lines_containing(r.out, "cannot load level").size(), 1u) << r.out;
+    EXPECT_TRUE(timedemo_lines(r.out).empty()) << r.out;
+}
+
+TEST(EngineTimedemo, TruncatedDemoFailsNamingFileAndOffset) {
     Vfs vfs = mount_lq1();
     std::vector<uint8_t> bytes = read_game_file(vfs, "demo.dem");
     auto blocks = demo_blocks(bytes);
@@ -128,19 +174,33 @@ TEST(EngineTimedemo, TruncatedDemoIsReportedWithFileAndOffsetAndPlaysWhatIsThere
 
     TempDir dir("nq_engine_truncated");
     ProcessResult r = timedemo_of(dir, bytes);
-    expect_clean_exit(r);
+    expect_failed_timedemo(r, "cut");
     auto at_offset = lines_naming_offset(r.out, cut.header);
     ASSERT_EQ(at_offset.size(), 1u) << "no line names offset " << cut.header << ":\n" << r.out;
-    EXPECT_NE(at_offset[0].find("demo.dem"), std::string::npos)
+    EXPECT_NE(at_offset[0].find("cut.dem"), std::string::npos)
         << "the message does not name the file: " << at_offset[0];
+    EXPECT_NE(at_offset[0].find("timedemo cut failed"), std::string::npos) << at_offset[0];
+}
 
-    // The complete blocks before the cut still play, as an in-process player counts them.
-    auto player = DemoPlayer::open(bytes, "demo.dem", DemoMode::TimeDemo);
-    ASSERT_TRUE(player);
-    ClientState client;
-    while (player->run_frame(client, 0.01) == FrameStatus::Playing) {
-    }
-    expect_one_timedemo_line(r, player->timedemo_frames());
+TEST(EngineTimedemo, TruncatedDemoStillPlaysWithPlaydemo) {
+    Vfs vfs = mount_lq1();
+    std::vector<uint8_t> bytes = read_game_file(vfs, "demo.dem");
+    auto blocks = demo_blocks(bytes);
+    ASSERT_GT(blocks.size(), 1000u);
+    // Early, so the demo plays out in recorded time within seconds.
+    const BlockSpan& cut = blocks[60];
+    ASSERT_GT(cut.length, 4u);
+    bytes.resize(cut.message + cut.length / 2);
+
+    TempDir dir("nq_engine_truncated_play");
+    std::string user_game = dir.subdir("user/lq1");
+    ASSERT_EQ(write_file(user_game + "/cut.dem", bytes), "");
+    auto args = engine_runs::base_args(dir.path(), data_root(), "lq1");
+    engine_runs::add(args, {"+playdemo", "cut", "+quit"});
+    ProcessResult r = run_nprquake(args, dir.path(), 120);
+    expect_clean_exit(r);
+    EXPECT_EQ(lines_naming_offset(r.out, cut.header).size(), 1u) << r.out;  // a warning
+    EXPECT_TRUE(lines_containing(r.out, "no frame rate reported").empty()) << r.out;
 }
 
 TEST(EngineTimedemo, CorruptMessageStopsTheDemoNamingFileAndOffset) {
@@ -158,14 +218,13 @@ TEST(EngineTimedemo, CorruptMessageStopsTheDemoNamingFileAndOffset) {
 
     TempDir dir("nq_engine_corrupt");
     ProcessResult r = timedemo_of(dir, bytes);
-    expect_clean_exit(r);
+    expect_failed_timedemo(r, "cut");
     auto stopped = lines_containing(r.out, "demo stopped");
     ASSERT_EQ(stopped.size(), 1u) << r.out;
-    EXPECT_NE(stopped[0].find("demo.dem"), std::string::npos) << stopped[0];
+    EXPECT_NE(stopped[0].find("cut.dem"), std::string::npos) << stopped[0];
     EXPECT_EQ(lines_naming_offset(stopped[0], bad.message).size(), 1u)
         << "expected offset " << bad.message << ": " << stopped[0];
     EXPECT_NE(stopped[0].find("number 100"), std::string::npos) << stopped[0];
-    EXPECT_EQ(timedemo_lines(r.out).size(), 1u) << r.out;  // the frames before it were timed
 }
 
 }  // namespace

@@ -55,6 +55,23 @@ TEST(HostCommandLine, FlagsWithAndWithoutValues) {
     EXPECT_TRUE(options.errors.empty());
 }
 
+TEST(HostCommandLine, BenchmarkOptions) {
+    LaunchOptions options = read_launch_options(CommandLine::parse(
+        {"-benchmark", "demo2", "-benchmarkruns", "5", "-benchframes", "frames.txt"}));
+    EXPECT_EQ(options.benchmark, "demo2");
+    EXPECT_EQ(options.benchmark_runs, 5);
+    EXPECT_EQ(options.bench_frames, "frames.txt");
+    EXPECT_TRUE(options.errors.empty());
+    EXPECT_EQ(read_launch_options(CommandLine::parse({"-benchmark", "demo"})).benchmark_runs, 1);
+
+    for (const char* bad : {"0", "-3", "1001", "x", "2.5"}) {
+        LaunchOptions o = read_launch_options(CommandLine::parse({"-benchmarkruns", bad}));
+        ASSERT_EQ(o.errors.size(), 1u) << bad;
+        EXPECT_NE(o.errors[0].find("-benchmarkruns"), std::string::npos) << o.errors[0];
+        EXPECT_EQ(o.benchmark_runs, 1) << bad;
+    }
+}
+
 TEST(HostCommandLine, TheLaterOfWindowAndFullscreenWins) {
     EXPECT_EQ(read_launch_options(CommandLine::parse({"-window", "-fullscreen"})).fullscreen, true);
     EXPECT_EQ(read_launch_options(CommandLine::parse({"-fullscreen", "-window"})).fullscreen,

@@ -1,0 +1,157 @@
+// `-benchmark DEMO -benchmarkruns N` and `-benchframes FILE` through the engine binary: N
+// timedemos, a spread that agrees with the runs' own timedemo lines, one benchmark.log line,
+// every counted frame time in the frames file; a failed benchmark reports no figure. And
+// deterministic playback: two timedemos of one demo draw the same frame, particles included.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "common/file_io.h"
+#include "engine_demo_replay.h"
+#include "engine_image_checks.h"
+#include "engine_output_checks.h"
+#include "engine_runs.h"
+#include "support/engine_run.h"
+
+namespace nq {
+namespace {
+
+using namespace test;
+
+std::vector<std::string> file_lines(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+// One timedemo's section of a -benchframes file.
+struct FramesSection {
+    std::string header;
+    std::vector<double> ms;
+};
+
+std::vector<FramesSection> frames_sections(const std::string& path) {
+    std::vector<FramesSection> sections;
+    for (const std::string& line : file_lines(path)) {
+        if (line.rfind("# ", 0) == 0) {
+            sections.push_back({line, {}});
+        } else if (!sections.empty()) {
+            sections.back().ms.push_back(std::stod(line));
+        }
+    }
+    return sections;
+}
+
+// The value after `label` in `line` ("fps min 98.1 median ...", label "min ").
+double number_after(const std::string& line, const std::string& label) {
+    std::smatch m;
+    if (!std::regex_search(line, m, std::regex(label + "([0-9.]+)"))) return -1;
+    return std::stod(m[1]);
+}
+
+TEST(EngineBenchmark, RunsTheTimedemoNTimesAndReportsTheSpreadOfTheirFrameRates) {
+    TempDir dir("nq_engine_benchmark");
+    auto args = engine_runs::base_args(dir.path(), data_root(), "lq1");
+    engine_runs::add(args, {"-benchmark", "demo", "-benchmarkruns", "2", "-benchframes",
+                            dir.file("frames.txt"), "+r_plugin", "null"});
+    ProcessResult r = run_nprquake(args, dir.path(), 300);
+    expect_clean_exit(r);
+
+    Vfs vfs = mount_lq1();
+    const uint64_t frames = timedemo_frame_count(vfs, "demo.dem");
+    auto runs = timedemo_lines(r.out);
+    ASSERT_EQ(runs.size(), 2u) << r.out;
+    for (const TimedemoLine& run : runs) EXPECT_EQ(run.frames, frames);
+
+    // The spread agrees with the two runs' own lines (each fps printed to 0.1).
+    auto reports = lines_containing(r.out, "benchmark demo: 2 runs");
+    ASSERT_EQ(reports.size(), 1u) << r.out;
+    const double low = std::min(runs[0].fps, runs[1].fps);
+    const double high = std::max(runs[0].fps, runs[1].fps);
+    EXPECT_NEAR(number_after(reports[0], "fps min "), low, 0.06) << reports[0];
+    EXPECT_NEAR(number_after(reports[0], " max "), high, 0.06) << reports[0];
+    EXPECT_NEAR(number_after(reports[0], "fps min [0-9.]+ median "), (low + high) / 2, 0.06)
+        << reports[0];
+
+    // benchmark.log: one line with the date, the GL renderer, the command line, the figures.
+    auto log = file_lines(dir.path() + "/user/lq1/benchmark.log");
+    ASSERT_EQ(log.size(), 1u);
+    EXPECT_TRUE(std::regex_search(log[0], std::regex(R"(^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ )")))
+        << log[0];
+    auto renderer = lines_containing(r.out, "GL_RENDERER: ");
+    ASSERT_EQ(renderer.size(), 1u) << r.out;
+    EXPECT_NE(log[0].find("GL_RENDERER " + renderer[0].substr(13)), std::string::npos) << log[0];
+    EXPECT_NE(log[0].find(reports[0]), std::string::npos) << log[0];
+    EXPECT_NE(log[0].find("-benchmark demo -benchmarkruns 2"), std::string::npos) << log[0];
+
+    // -benchframes: each run's counted frames, adding up to its reported seconds.
+    auto sections = frames_sections(dir.file("frames.txt"));
+    ASSERT_EQ(sections.size(), 2u);
+    for (size_t i = 0; i < sections.size(); ++i) {
+        EXPECT_EQ(sections[i].header, "# demo null 320x240 " + std::to_string(frames));
+        EXPECT_EQ(sections[i].ms.size(), frames);
+        double seconds = 0;
+        for (double ms : sections[i].ms) seconds += ms / 1000;
+        EXPECT_NEAR(seconds, runs[i].seconds, 0.06);
+    }
+}
+
+TEST(EngineBenchmark, FailedBenchmarkExitsNonZeroAndLogsNoFigure) {
+    TempDir dir("nq_engine_benchmark_fail");
+    auto args = engine_runs::base_args(dir.path(), data_root(), "lq1");
+    engine_runs::add(args, {"-benchmark", "no_such_demo", "-benchmarkruns", "3"});
+    ProcessResult r = run_nprquake(args, dir.path(), 60);
+    ASSERT_TRUE(r.spawned) << r.describe();
+    EXPECT_FALSE(r.timed_out) << r.describe();
+    EXPECT_EQ(r.exit_code, 1) << r.describe();
+    EXPECT_EQ(sanitizer_report(r.err), "") << r.describe();
+    EXPECT_TRUE(timedemo_lines(r.out).empty()) << r.out;
+    EXPECT_EQ(lines_containing(r.out, "failed after 0 of 3 runs").size(), 1u) << r.out;
+    auto log = file_lines(dir.path() + "/user/lq1/benchmark.log");
+    ASSERT_EQ(log.size(), 1u);
+    EXPECT_NE(log[0].find("FAILED"), std::string::npos) << log[0];
+    EXPECT_EQ(log[0].find("fps"), std::string::npos) << log[0];
+}
+
+// Demo frame 1000 of demo.dem: thousands of particles (blood, spread by random numbers) in
+// front of the player.
+constexpr uint64_t kParticleFrame = 1000;
+
+TEST(EngineBenchmark, TwoTimedemosOfOneDemoDrawTheSameFrame) {
+    Vfs vfs = mount_lq1();
+    DemoReplay replay(vfs, "demo.dem");
+    ASSERT_TRUE(replay.play_to(kParticleFrame));
+    ASSERT_GT(replay.client().particles().size(), 1000u) << "no subject for this test";
+
+    // One process, two timedemos: the null renderer (fast) but for the frame compared.
+    TempDir dir("nq_engine_same_frames");
+    auto args = engine_runs::base_args(dir.path(), data_root(), "lq1");
+    engine_runs::add(args, {"+r_plugin", "null"});
+    for (const char* name : {"first", "second"}) {
+        const std::string shot = dir.file(std::string(name) + ".png");
+        engine_runs::demo_at(args, kParticleFrame - 2, "r_plugin classic");
+        engine_runs::demo_at(args, kParticleFrame, "screenshot " + shot + "; r_plugin null");
+        engine_runs::add(args, {"+timedemo", "demo"});
+    }
+    engine_runs::add(args, {"+quit"});
+    ProcessResult r = run_nprquake(args, dir.path(), 300);
+    expect_clean_exit(r);
+    ASSERT_EQ(timedemo_lines(r.out).size(), 2u) << r.out;
+
+    RgbImage first, second;
+    ASSERT_NO_FATAL_FAILURE(load_screenshot(dir.file("first.png"), first));
+    ASSERT_NO_FATAL_FAILURE(load_screenshot(dir.file("second.png"), second));
+    RegionStats stats = region_stats(first, whole(first));
+    ASSERT_GT(stats.distinct_colours, 100u) << "a blank frame proves nothing";
+    ASSERT_EQ(first.rgb.size(), second.rgb.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < first.rgb.size(); ++i) differing += first.rgb[i] != second.rgb[i];
+    EXPECT_EQ(differing, 0u);
+}
+
+}  // namespace
+}  // namespace nq
