@@ -169,6 +169,7 @@ class Engine {
     // its failure is the exit status); false once they and the demos they started are done.
     void update_command_line_job();
     void screenshot(const std::string& name);
+    void print_view_position();
     void swap_plugin(const std::string& name);
 
     CommandLine command_line_;

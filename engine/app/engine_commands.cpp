@@ -58,6 +58,9 @@ void Engine::register_commands() {
         },
         "run commands when the next demo reaches a frame (scripted swaps, screenshots)");
     c.add_command(
+        "viewpos", [this](const CommandArgs&) { print_view_position(); },
+        "the player's position as the last message gave it, with that message's server time");
+    c.add_command(
         "screenshot",
         [this](const CommandArgs& a) { screenshot(a.argc() > 1 ? a.argv(1) : std::string()); },
         "save the screen as PNG (screenshot [file.png])");
@@ -94,6 +97,20 @@ void Engine::register_commands() {
         },
         "show the search path");
     register_game_commands();
+}
+
+// Quake's viewpos, from the messages themselves (not the interpolated view), so a game and
+// the replay of its recording can be compared exactly: "viewpos: time T origin X Y Z".
+void Engine::print_view_position() {
+    if (!demo_->active()) return print("viewpos: no game or demo is running");
+    const ClientState& client = demo_->client();
+    const ClientEntity* player = client.entity(client.view_entity());
+    if (!player || player->msg_time < 0) return print("viewpos: no position yet");
+    const Vec3& o = player->msg_origins[0];
+    char line[128];
+    std::snprintf(line, sizeof line, "viewpos: time %.4f origin %.3f %.3f %.3f", player->msg_time,
+                  double(o[0]), double(o[1]), double(o[2]));
+    print(line);
 }
 
 void Engine::swap_plugin(const std::string& name) {

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <regex>
 
@@ -36,11 +37,13 @@ std::string walk_script(const std::string& demo) {
     wait(10);
     s += "+forward\n";
     wait(144);
-    s += "-forward\n+right\n";
+    s += "viewpos\n-forward\n+right\n";
     wait(40);
-    s += "-right\n+forward\n+attack\n";
-    wait(72);
-    s += "-forward\n-attack\nstop\nquit\n";
+    s += "viewpos\n-right\n+forward\n+attack\n";
+    wait(36);
+    s += "viewpos\n";
+    wait(36);
+    s += "viewpos\n-forward\n-attack\nstop\nquit\n";
     return s;
 }
 
@@ -119,16 +122,36 @@ TEST(EngineGame, ScriptedSessionRecordsAReplayableDeterministicDemo) {
     ASSERT_EQ(b.run.exit_code, 0) << b.run.describe();
     EXPECT_EQ(a.demo, b.demo) << "two recordings of one script differ";
 
-    // It replays here with the frame count its blocks give.
+    // It replays here with the frame count its blocks give, and the player where the game had
+    // him: every position the game printed is the replay's at the same server time.
     const std::string user = dir.path() + "/user_walk_a";
     ProcessResult replay =
         run_nprquake({"-userdir", user, "-basedir", data_root(), "-game", "lq1", "-width", "320",
-                      "-height", "240", "+timedemo", "walk_a", "+quit"},
+                      "-height", "240", "+alias", "everyframe", "viewpos; wait; everyframe",
+                      "+demo_at", "1", "everyframe", "+timedemo", "walk_a", "+quit"},
                      dir.path(), 300);
     ASSERT_EQ(replay.exit_code, 0) << replay.describe();
     const auto lines = timedemo_lines(replay.out);
     ASSERT_EQ(lines.size(), 1u) << replay.out;
     EXPECT_EQ(lines[0].frames, expected_timedemo_frames(*demo));
+
+    const auto positions = [](const std::string& out) {
+        std::map<std::string, std::string> at;  // time -> origin
+        const std::regex line(R"(viewpos: time (\S+) origin (.+))");
+        for (const std::string& text : lines_containing(out, "viewpos: time")) {
+            std::smatch m;
+            if (std::regex_search(text, m, line)) at.emplace(m[1].str(), m[2].str());
+        }
+        return at;
+    };
+    const auto played = positions(a.run.out);
+    const auto replayed = positions(replay.out);
+    ASSERT_EQ(played.size(), 4u) << a.run.out;
+    ASSERT_GT(replayed.size(), 200u);
+    for (const auto& [time, origin] : played) {
+        ASSERT_TRUE(replayed.count(time)) << "the replay never showed server time " << time;
+        EXPECT_EQ(replayed.at(time), origin) << "at server time " << time;
+    }
 }
 
 TEST(EngineGame, MissingMapIsAMessageAndTheEngineGoesOn) {
