@@ -87,8 +87,9 @@ struct EmittedQuad {
     uint8_t sampling;
 };
 
-inline std::vector<EmittedQuad> hud_quads(const ClientState& client, const HudFrame& frame,
-                                          const HudPictures& pictures) {
+// The quads `build(batch)` emits, in order.
+template <typename Build>
+std::vector<EmittedQuad> emitted_quads(Build&& build) {
     std::vector<EmittedQuad> quads;
     QuadBatch batch(64);
     batch.set_flush([&](std::span<const QuadVertex> v) {
@@ -98,9 +99,14 @@ inline std::vector<EmittedQuad> hud_quads(const ClientState& client, const HudFr
                              Colour{v[i].r, v[i].g, v[i].b, v[i].a}, v[i].sampling});
         }
     });
-    build_hud(client, frame, pictures, batch);
+    build(batch);
     batch.flush();
     return quads;
+}
+
+inline std::vector<EmittedQuad> hud_quads(const ClientState& client, const HudFrame& frame,
+                                          const HudPictures& pictures) {
+    return emitted_quads([&](QuadBatch& batch) { build_hud(client, frame, pictures, batch); });
 }
 
 inline HudFrame hud_frame(int width, int height, float viewsize = 100, float scale = 1) {

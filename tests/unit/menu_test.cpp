@@ -380,18 +380,8 @@ class MenuLayout : public MenuRules {
     }
     std::vector<EmittedQuad> quads(const HudPictures& pictures, const HudScreen& screen,
                                    double real_time = 0) {
-        std::vector<EmittedQuad> out;
-        QuadBatch batch(64);
-        batch.set_flush([&](std::span<const QuadVertex> v) {
-            for (size_t i = 0; i + 3 < v.size(); i += 4) {
-                out.push_back({v[i].x, v[i].y, v[i + 2].x, v[i + 2].y,
-                               TextureRegion{v[i].u, v[i].v, v[i + 2].u, v[i + 2].v},
-                               Colour{v[i].r, v[i].g, v[i].b, v[i].a}, v[i].sampling});
-            }
-        });
-        build_menu(menu, pictures, screen, real_time, batch);
-        batch.flush();
-        return out;
+        return emitted_quads(
+            [&](QuadBatch& batch) { build_menu(menu, pictures, screen, real_time, batch); });
     }
     static bool has_quad(const std::vector<EmittedQuad>& quads, float x0, float y0, float x1,
                          float y1) {
