@@ -72,18 +72,6 @@ bool is_view_model(const nqr_entity& entity) {
     return (entity.flags & NQR_ENTITY_VIEWMODEL) != 0;
 }
 
-bool in_pass(const nqr_entity& entity, int pass_index) {
-    const bool translucent = entity_alpha(entity.alpha) < 1.0f;
-    switch (pass_index) {
-        case 0:
-            return !is_view_model(entity) && !translucent;
-        case 1:
-            return !is_view_model(entity) && translucent;
-        default:
-            return is_view_model(entity);
-    }
-}
-
 }  // namespace
 
 bool AliasDrawer::init(gl::ObjectTracker* tracker, const uint8_t* palette_rgb, std::string& error) {
@@ -177,11 +165,10 @@ void AliasDrawer::draw_entity(const nqr_frame& frame, const FrameView& view,
 }
 
 void AliasDrawer::draw_pass(const nqr_frame& frame, const FrameView& view,
-                            const ModelRegistry& models, Pass pass) {
-    const int pass_index = static_cast<int>(pass);
+                            const ModelRegistry& models, AliasPass pass) {
     for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
         const nqr_entity* entity = frame.alias_entities[i];
-        if (!entity_in_view(entity) || !in_pass(*entity, pass_index)) continue;
+        if (!entity_in_view(entity) || alias_pass_of(*entity) != pass) continue;
         const RegisteredModel* model = models.find(entity->model);
         if (!model || !model->alias) continue;
         draw_entity(frame, view, *entity, *model->alias);
@@ -192,10 +179,10 @@ void AliasDrawer::draw_alias_entities(const nqr_frame& frame, const ModelRegistr
     FrameView view;
     if (!read_frame_view(&frame, view) || !frame.alias_entities || !program_) return;
     begin_classic_pass();
-    draw_pass(frame, view, models, Pass::opaque);
-    draw_pass(frame, view, models, Pass::translucent);
+    draw_pass(frame, view, models, AliasPass::opaque);
+    draw_pass(frame, view, models, AliasPass::translucent);
     glDepthRange(0.0, settings.view_model_depth_max);
-    draw_pass(frame, view, models, Pass::view_model);
+    draw_pass(frame, view, models, AliasPass::view_model);
     end_classic_pass();
 }
 

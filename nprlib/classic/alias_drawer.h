@@ -49,9 +49,8 @@ class AliasDrawer {
     AliasSettings settings;
 
   private:
-    enum class Pass { opaque, translucent, view_model };
     void draw_pass(const nqr_frame& frame, const FrameView& view, const ModelRegistry& models,
-                   Pass pass);
+                   AliasPass pass);
     void set_lighting(const nqr_entity& entity);
 
     gl::Program program_;

@@ -13,27 +13,13 @@ void pose_position(const nqr_alias_model& model, const nqr_alias_vertex& v, floa
     for (int i = 0; i < 3; ++i) out[i] = model.scale[i] * v.v[i] + model.origin[i];
 }
 
-bool triangle_valid(const nqr_alias_model& model, const int32_t* triangle) {
-    for (int corner = 1; corner <= 3; ++corner) {
-        if (triangle[corner] < 0 || static_cast<uint32_t>(triangle[corner]) >= model.num_vertices) {
-            return false;
-        }
-    }
-    return true;
-}
-
 // Index of the mesh vertex for (vertex, back-of-seam), made on first use.
 uint32_t mesh_vertex(const nqr_alias_model& model, uint32_t vertex, bool back_of_seam,
                      std::vector<int64_t>& lookup, AliasMesh& mesh) {
     const size_t key = static_cast<size_t>(vertex) * 2 + (back_of_seam ? 1 : 0);
     if (lookup[key] >= 0) return static_cast<uint32_t>(lookup[key]);
-    const int32_t* st = model.st + static_cast<size_t>(vertex) * 3;
-    float s = static_cast<float>(st[1]);
-    if (back_of_seam) s += static_cast<float>(model.skin_width / 2);
-    AliasMeshVertex out{
-        vertex,
-        {(s + 0.5f) / static_cast<float>(model.skin_width),
-         (static_cast<float>(st[2]) + 0.5f) / static_cast<float>(model.skin_height)}};
+    const std::array<float, 2> uv = alias_skin_uv(model, vertex, back_of_seam);
+    AliasMeshVertex out{vertex, {uv[0], uv[1]}};
     lookup[key] = static_cast<int64_t>(mesh.vertices.size());
     mesh.vertices.push_back(out);
     return static_cast<uint32_t>(lookup[key]);
@@ -58,6 +44,31 @@ void pack_poses(const nqr_alias_model& model, AliasMesh& mesh) {
 }
 
 }  // namespace
+
+bool alias_triangle_valid(const nqr_alias_model& model, const int32_t* triangle) {
+    for (int corner = 1; corner <= 3; ++corner) {
+        if (triangle[corner] < 0 || static_cast<uint32_t>(triangle[corner]) >= model.num_vertices) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool alias_vertex_on_back_of_seam(const nqr_alias_model& model, const int32_t* triangle,
+                                  int corner) {
+    const bool faces_front = triangle[0] != 0;
+    const auto vertex = static_cast<size_t>(triangle[corner]);
+    return !faces_front && model.st[vertex * 3] != 0;
+}
+
+std::array<float, 2> alias_skin_uv(const nqr_alias_model& model, uint32_t vertex,
+                                   bool back_of_seam) {
+    const int32_t* st = model.st + static_cast<size_t>(vertex) * 3;
+    float s = static_cast<float>(st[1]);
+    if (back_of_seam) s += static_cast<float>(model.skin_width / 2);
+    return {(s + 0.5f) / static_cast<float>(model.skin_width),
+            (static_cast<float>(st[2]) + 0.5f) / static_cast<float>(model.skin_height)};
+}
 
 bool validate_alias_model(const nqr_alias_model& model, std::string& error) {
     if (!has_known_prefix(&model)) {
@@ -114,7 +125,7 @@ void compute_pose_normals(const nqr_alias_model& model, uint32_t pose, std::vect
     const nqr_alias_vertex* vertices = model.poses + static_cast<size_t>(pose) * model.num_vertices;
     for (uint32_t t = 0; t < model.num_triangles; ++t) {
         const int32_t* triangle = model.triangles + static_cast<size_t>(t) * 4;
-        if (!triangle_valid(model, triangle)) continue;
+        if (!alias_triangle_valid(model, triangle)) continue;
         Vec3 p[3];
         for (int c = 0; c < 3; ++c) pose_position(model, vertices[triangle[c + 1]], p[c].data());
         // Quake's triangles wind clockwise seen from outside, so (p2 - p0) x (p1 - p0) points
@@ -147,13 +158,11 @@ AliasMesh build_alias_mesh(const nqr_alias_model& model) {
     std::vector<int64_t> lookup(static_cast<size_t>(model.num_vertices) * 2, -1);
     for (uint32_t t = 0; t < model.num_triangles; ++t) {
         const int32_t* triangle = model.triangles + static_cast<size_t>(t) * 4;
-        if (!triangle_valid(model, triangle)) continue;
-        const bool faces_front = triangle[0] != 0;
+        if (!alias_triangle_valid(model, triangle)) continue;
         for (int corner = 1; corner <= 3; ++corner) {
             const auto vertex = static_cast<uint32_t>(triangle[corner]);
-            const bool on_seam = model.st[static_cast<size_t>(vertex) * 3] != 0;
-            mesh.indices.push_back(
-                mesh_vertex(model, vertex, on_seam && !faces_front, lookup, mesh));
+            mesh.indices.push_back(mesh_vertex(
+                model, vertex, alias_vertex_on_back_of_seam(model, triangle, corner), lookup, mesh));
         }
     }
     pack_poses(model, mesh);

@@ -11,6 +11,7 @@
 // directions to within its own quantisation.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -38,6 +39,15 @@ struct AliasMesh {
 bool validate_alias_model(const nqr_alias_model& model, std::string& error);
 
 AliasMesh build_alias_mesh(const nqr_alias_model& model);
+
+// A triangle (model.triangles: facesfront, v0, v1, v2) whose vertices are all in range.
+bool alias_triangle_valid(const nqr_alias_model& model, const int32_t* triangle);
+// Whether corner 1..3 of a back-facing triangle sits on the seam (its s shifts by half a skin).
+bool alias_vertex_on_back_of_seam(const nqr_alias_model& model, const int32_t* triangle,
+                                  int corner);
+// Texture coordinates of `vertex`, shifted by half the skin on the back of the seam.
+std::array<float, 2> alias_skin_uv(const nqr_alias_model& model, uint32_t vertex,
+                                   bool back_of_seam);
 
 // Model-space unit normals of one pose (num_vertices x 3), outward for Quake's winding.
 void compute_pose_normals(const nqr_alias_model& model, uint32_t pose, std::vector<float>& out);

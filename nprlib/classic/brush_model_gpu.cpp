@@ -52,14 +52,15 @@ void set_float_attribute(GLuint location, GLint components, size_t offset) {
 std::unique_ptr<BrushModelGpu> BrushModelGpu::create(gl::ObjectTracker* tracker,
                                                      const nqr_brush_model& brush,
                                                      const uint8_t* palette_rgb,
-                                                     std::string& error) {
+                                                     std::string& error,
+                                                     const gl::RgbaFilter* texture_filter) {
     if (!validate(brush, error)) return nullptr;
     std::unique_ptr<BrushModelGpu> model(new BrushModelGpu());
     model->brush_ = &brush;
     const int page_size = choose_lightmap_page_size(brush);
     BrushMesh mesh = build_brush_mesh(brush, page_size);
     model->upload_geometry(tracker, mesh);
-    model->textures_ = create_brush_textures(tracker, brush, palette_rgb);
+    model->textures_ = create_brush_textures(tracker, brush, palette_rgb, texture_filter);
     model->atlas_.create(tracker, page_size, mesh.lightmap_pages);
     model->light_.assign(brush.num_surfaces, SurfaceLight{});
     model->accumulator_.assign(static_cast<size_t>(mesh.largest_lightmap_samples) * 3, 0.0f);

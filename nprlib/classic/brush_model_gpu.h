@@ -32,10 +32,12 @@ struct SurfaceSelection {
 
 class BrushModelGpu {
   public:
-    // nullptr with `error` set when the model's data cannot be used.
+    // nullptr with `error` set when the model's data cannot be used. `texture_filter` (may be
+    // null): see create_brush_textures.
     static std::unique_ptr<BrushModelGpu> create(gl::ObjectTracker* tracker,
                                                  const nqr_brush_model& brush,
-                                                 const uint8_t* palette_rgb, std::string& error);
+                                                 const uint8_t* palette_rgb, std::string& error,
+                                                 const gl::RgbaFilter* texture_filter = nullptr);
 
     const nqr_brush_model& brush() const { return *brush_; }
     uint32_t num_surfaces() const { return static_cast<uint32_t>(surfaces_.size()); }

@@ -52,7 +52,7 @@ void create_sky_layers(gl::ObjectTracker* tracker, const nqr_texture& source,
 }
 
 BrushTextureGpu create_one(gl::ObjectTracker* tracker, const nqr_texture& source,
-                           const uint8_t* palette) {
+                           const uint8_t* palette, const gl::RgbaFilter* filter) {
     const bool has_pixels = source.mips[0] != nullptr && source.width > 0 && source.height > 0;
     if (!has_pixels) return placeholder_texture(tracker);
     BrushTextureGpu out;
@@ -69,7 +69,7 @@ BrushTextureGpu create_one(gl::ObjectTracker* tracker, const nqr_texture& source
     expansion.blacken_fullbrights = out.kind != SurfaceKind::liquid;
     if (out.kind == SurfaceKind::fence) expansion.transparent = gl::Transparent::index255;
     out.base = gl::create_palette_texture(tracker, width, height, pixels, palette, expansion,
-                                          gl::kMipmappedRepeat, scratch);
+                                          gl::kMipmappedRepeat, scratch, filter);
     if (out.kind != SurfaceKind::liquid) {
         out.fullbright = gl::create_fullbright_texture(tracker, width, height, pixels, palette,
                                                        gl::kMipmappedRepeat, scratch);
@@ -90,11 +90,12 @@ SurfaceKind surface_kind_of(const nqr_texture& texture) {
 
 std::vector<BrushTextureGpu> create_brush_textures(gl::ObjectTracker* tracker,
                                                    const nqr_brush_model& brush,
-                                                   const uint8_t* palette_rgb) {
+                                                   const uint8_t* palette_rgb,
+                                                   const gl::RgbaFilter* filter) {
     std::vector<BrushTextureGpu> textures;
     textures.reserve(brush.num_textures + 1);
     for (uint32_t i = 0; i < brush.num_textures; ++i) {
-        textures.push_back(create_one(tracker, abi_element(brush.textures, i), palette_rgb));
+        textures.push_back(create_one(tracker, abi_element(brush.textures, i), palette_rgb, filter));
     }
     textures.push_back(placeholder_texture(tracker));
     return textures;

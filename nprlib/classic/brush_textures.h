@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gl/handles.h"
+#include "gl/texture_upload.h"
 #include "nqr_renderer.h"
 
 namespace nq::npr::classic {
@@ -27,9 +28,11 @@ struct BrushTextureGpu {
 SurfaceKind surface_kind_of(const nqr_texture& texture);
 
 // One entry per brush.textures element, plus a last one: the placeholder for surfaces whose
-// texture index is -1 or out of range.
+// texture index is -1 or out of range. `filter` (may be null) rewrites the base colours of
+// every kind but sky before upload; fullbright masks stay as the palette says.
 std::vector<BrushTextureGpu> create_brush_textures(gl::ObjectTracker* tracker,
                                                    const nqr_brush_model& brush,
-                                                   const uint8_t* palette_rgb);
+                                                   const uint8_t* palette_rgb,
+                                                   const gl::RgbaFilter* filter = nullptr);
 
 }  // namespace nq::npr::classic

@@ -51,6 +51,10 @@ class ClassicRenderer {
     AliasSettings& alias_settings() { return alias_.settings; }
 
     const ModelRegistry& models() const { return models_; }
+    // A style's rewrite of brush textures before upload, for models registered from now on.
+    void set_brush_texture_filter(gl::RgbaFilter filter) {
+        models_.set_brush_texture_filter(std::move(filter));
+    }
     WorldDrawer& world_drawer() { return world_; }
     AliasDrawer& alias_drawer() { return alias_; }
     SpriteDrawer& sprite_drawer() { return sprites_; }

@@ -66,4 +66,9 @@ float entity_alpha(float alpha) {
     return (alpha <= 0.0f || alpha >= 1.0f) ? 1.0f : alpha;
 }
 
+AliasPass alias_pass_of(const nqr_entity& entity) {
+    if ((entity.flags & NQR_ENTITY_VIEWMODEL) != 0) return AliasPass::view_model;
+    return entity_alpha(entity.alpha) < 1.0f ? AliasPass::translucent : AliasPass::opaque;
+}
+
 }  // namespace nq::npr::classic

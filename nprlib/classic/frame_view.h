@@ -41,4 +41,9 @@ void end_classic_pass();
 // unset alpha looks like in the protocol extensions that carry one).
 float entity_alpha(float alpha);
 
+// The three passes alias models are drawn in, in this order: opaque ones, translucent ones
+// (blended, no depth writes), then the view model (squeezed into the near depth range).
+enum class AliasPass { opaque = 0, translucent = 1, view_model = 2 };
+AliasPass alias_pass_of(const nqr_entity& entity);
+
 }  // namespace nq::npr::classic

@@ -18,7 +18,7 @@ bool ModelRegistry::add_brush(const nqr_model& model, RegisteredModel& out, std:
     }
     SharedBrush& shared = brushes_[model.brush];
     if (!shared.gpu) {
-        shared.gpu = BrushModelGpu::create(tracker_, *model.brush, palette_, error);
+        shared.gpu = BrushModelGpu::create(tracker_, *model.brush, palette_, error, &brush_filter_);
         if (!shared.gpu) {
             brushes_.erase(model.brush);
             return false;

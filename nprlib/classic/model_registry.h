@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "classic/alias_model_gpu.h"
 #include "classic/brush_model_gpu.h"
@@ -28,6 +29,8 @@ struct RegisteredModel {
 class ModelRegistry {
   public:
     void init(gl::ObjectTracker* tracker, const uint8_t* palette_rgb);
+    // Applied to the base colours of brush models registered from now on (create_brush_textures).
+    void set_brush_texture_filter(gl::RgbaFilter filter) { brush_filter_ = std::move(filter); }
 
     // Uploads the model; false with `error` when its data cannot be used (it is then unknown).
     // Registering an id again replaces the old model.
@@ -49,6 +52,7 @@ class ModelRegistry {
 
     gl::ObjectTracker* tracker_ = nullptr;
     const uint8_t* palette_ = nullptr;
+    gl::RgbaFilter brush_filter_;
     std::unordered_map<nqr_model_id, RegisteredModel> models_;
     std::unordered_map<const nqr_brush_model*, SharedBrush> brushes_;
 };

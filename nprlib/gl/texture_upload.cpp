@@ -30,11 +30,12 @@ Texture create_solid_texture(ObjectTracker* tracker, uint8_t r, uint8_t g, uint8
 Texture create_palette_texture(ObjectTracker* tracker, int width, int height,
                                std::span<const uint8_t> pixels, const uint8_t* palette_rgb,
                                PaletteExpansion expansion, const Sampling& sampling,
-                               std::vector<uint8_t>& scratch) {
+                               std::vector<uint8_t>& scratch, const RgbaFilter* filter) {
     expand_palette_image(pixels, palette_rgb, expansion, scratch);
     if (expansion.transparent != Transparent::none) {
         bleed_colour_into_transparent_texels(scratch, width, height);
     }
+    if (filter && *filter) (*filter)(width, height, scratch);
     return create_rgba8_texture(tracker, width, height, scratch, sampling);
 }
 

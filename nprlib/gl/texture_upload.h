@@ -5,6 +5,7 @@
 #include <epoxy/gl.h>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -36,11 +37,16 @@ Texture create_rgba8_texture(ObjectTracker* tracker, int width, int height,
 // A 1x1 texture of one colour (black for "no fullbrights", white for "no lightmap").
 Texture create_solid_texture(ObjectTracker* tracker, uint8_t r, uint8_t g, uint8_t b, uint8_t a);
 
-// Palette image -> RGBA8 texture in one call; `scratch` is reused between calls.
+// Rewrites a texture's RGBA8 texels before they are uploaded (a style's abstraction of the
+// world's textures, for instance). Runs at load time only.
+using RgbaFilter = std::function<void(int width, int height, std::vector<uint8_t>& rgba)>;
+
+// Palette image -> RGBA8 texture in one call; `scratch` is reused between calls. `filter`, when
+// given, sees the expanded texels first.
 Texture create_palette_texture(ObjectTracker* tracker, int width, int height,
                                std::span<const uint8_t> pixels, const uint8_t* palette_rgb,
                                PaletteExpansion expansion, const Sampling& sampling,
-                               std::vector<uint8_t>& scratch);
+                               std::vector<uint8_t>& scratch, const RgbaFilter* filter = nullptr);
 
 // The fullbright mask of a palette image as a texture, or an empty handle when it has no
 // fullbright pixel (callers then bind a shared black texture).

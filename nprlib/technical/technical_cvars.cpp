@@ -1,37 +1,17 @@
 #include "technical/technical_cvars.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 namespace nq::npr::technical {
 namespace {
 
 using S = TechnicalSettings;
 
-bool flag(const nqr_cvar& c) {
-    return c.value != 0.0f;
-}
-
-int choice(const nqr_cvar& c, int highest) {
-    return std::clamp(c.integer, 0, highest);
-}
-
-// "r g b" with components 0..1; missing components repeat the last one ("0.5" is grey).
-glm::vec3 color(const nqr_cvar& c) {
-    glm::vec3 out(0.0f);
-    const char* text = c.string ? c.string : "";
-    for (int i = 0; i < 3; ++i) {
-        char* end = nullptr;
-        const float v = std::strtof(text, &end);
-        if (end == text) {
-            if (i > 0) out[i] = out[i - 1];
-            continue;
-        }
-        out[i] = std::clamp(v, 0.0f, 1.0f);
-        text = end;
-    }
-    return out;
-}
+using cvar_parse::choice;
+using cvar_parse::color;
+using cvar_parse::flag;
+using menu_line::range;
+using menu_line::toggle;
 
 // The bindings; the lambdas convert to plain function pointers.
 const CvarBinding kBindings[] = {
@@ -127,37 +107,16 @@ const char* const kShadingChoices[] = {"classic", "gooch", "metal", "object id"}
 const char* const kEdgeColourChoices[] = {"base", "white creases", "white all"};
 const char* const kBackfaceChoices[] = {"never", "if needed", "always"};
 
-constexpr nqr_menu_setting toggle(const char* cvar, const char* label) {
-    return {sizeof(nqr_menu_setting), cvar, label, NQR_MENU_TOGGLE, 0, 1, 1, nullptr, 0};
-}
-constexpr nqr_menu_setting range(const char* cvar, const char* label, float min, float max,
-                                 float step) {
-    return {sizeof(nqr_menu_setting), cvar, label, NQR_MENU_RANGE, min, max, step, nullptr, 0};
-}
-template <size_t N>
-constexpr nqr_menu_setting choice(const char* cvar, const char* label,
-                                  const char* const (&choices)[N]) {
-    return {sizeof(nqr_menu_setting),
-            cvar,
-            label,
-            NQR_MENU_CHOICE,
-            0,
-            float(N - 1),
-            1,
-            choices,
-            uint32_t(N)};
-}
-
 const nqr_menu_setting kMenuSettings[] = {
     toggle("tech_silhouettes", "Silhouettes"),
     toggle("tech_creases", "Creases"),
     toggle("tech_world_edges", "World edges"),
     range("tech_silhouette_width", "Silhouette width", 0.5f, 6, 0.5f),
     range("tech_crease_angle", "Crease angle", 10, 120, 5),
-    choice("tech_edge_colors", "Edge colours", kEdgeColourChoices),
-    choice("tech_backface_lines", "Back-face lines", kBackfaceChoices),
+    menu_line::choice("tech_edge_colors", "Edge colours", kEdgeColourChoices),
+    menu_line::choice("tech_backface_lines", "Back-face lines", kBackfaceChoices),
     toggle("tech_fade", "Distance fade"),
-    choice("tech_shading", "Shading", kShadingChoices),
+    menu_line::choice("tech_shading", "Shading", kShadingChoices),
     range("tech_gooch_b", "Gooch blue", 0, 1, 0.05f),
     range("tech_gooch_y", "Gooch yellow", 0, 1, 0.05f),
     toggle("tech_shadows", "Shadows"),
@@ -172,29 +131,6 @@ std::span<const nqr_menu_setting> technical_menu_settings() {
 
 std::span<const CvarBinding> technical_cvar_bindings() {
     return kBindings;
-}
-
-void TechnicalCvars::register_all(const nqr_engine& engine) {
-    size_t i = 0;
-    for (const CvarBinding& b : kBindings) {
-        cvars_[i++] = engine.cvar_register ? engine.cvar_register(b.name, b.default_value,
-                                                                  NQR_CVAR_ARCHIVE, b.description)
-                                           : nullptr;
-    }
-    first_ = true;
-}
-
-void TechnicalCvars::update(TechnicalSettings& settings) {
-    size_t i = 0;
-    for (const CvarBinding& b : kBindings) {
-        const nqr_cvar* cvar = cvars_[i];
-        if (cvar && (first_ || cvar->modified_count != seen_[i])) {
-            b.apply(*cvar, settings);
-            seen_[i] = cvar->modified_count;
-        }
-        ++i;
-    }
-    first_ = false;
 }
 
 }  // namespace nq::npr::technical

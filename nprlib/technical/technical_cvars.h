@@ -4,21 +4,15 @@
 // docs/console.md lists every entry with its default.
 #pragma once
 
-#include <cstddef>
 #include <span>
 
+#include "abi/cvar_bindings.h"
 #include "nqr_renderer.h"
 #include "technical/technical_settings.h"
 
 namespace nq::npr::technical {
 
-struct CvarBinding {
-    const char* name;
-    const char* default_value;
-    const char* description;
-    // Reads the cvar into its settings field.
-    void (*apply)(const nqr_cvar& cvar, TechnicalSettings& settings);
-};
+using CvarBinding = npr::CvarBinding<TechnicalSettings>;
 
 std::span<const CvarBinding> technical_cvar_bindings();
 
@@ -28,16 +22,9 @@ std::span<const nqr_menu_setting> technical_menu_settings();
 
 // Registers every binding with the engine (NQR_CVAR_ARCHIVE) and keeps the live cvars; update()
 // copies changed ones into settings (cheap when nothing changed; never allocates).
-class TechnicalCvars {
+class TechnicalCvars : public CvarSet<TechnicalSettings> {
   public:
-    void register_all(const nqr_engine& engine);
-    void update(TechnicalSettings& settings);
-
-  private:
-    static constexpr size_t kMaxCvars = 64;
-    const nqr_cvar* cvars_[kMaxCvars] = {};
-    uint32_t seen_[kMaxCvars] = {};
-    bool first_ = true;
+    TechnicalCvars() : CvarSet(technical_cvar_bindings()) {}
 };
 
 }  // namespace nq::npr::technical

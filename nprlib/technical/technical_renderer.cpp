@@ -24,16 +24,6 @@ bool wants_alias_edges(const EdgeSettings& settings) {
     return settings.silhouettes || settings.creases;
 }
 
-bool is_view_model(const nqr_entity& entity) {
-    return (entity.flags & NQR_ENTITY_VIEWMODEL) != 0;
-}
-
-bool in_pass(const nqr_entity& entity, int pass) {
-    const bool translucent = classic::entity_alpha(entity.alpha) < 1.0f;
-    if (pass == 2) return is_view_model(entity);
-    return !is_view_model(entity) && translucent == (pass == 1);
-}
-
 EdgeFrameUniforms edge_frame_uniforms(const nqr_frame& frame) {
     EdgeFrameUniforms out;
     out.projection = classic::mat4_from(frame.camera.projection);
@@ -257,7 +247,7 @@ ShadowPasses TechnicalRenderer::shadow_passes(const AliasItem& item,
                                               const classic::FrameView& view) const {
     ShadowPasses none;
     if (!settings.shadows.enabled || !item.edges || !item.casts_shadow ||
-        !in_pass(*item.entity, static_cast<int>(AliasPass::opaque))) {
+        classic::alias_pass_of(*item.entity) != AliasPass::opaque) {
         return none;
     }
     const glm::vec3 origin = glm::make_vec3(item.entity->origin);
@@ -278,7 +268,7 @@ ShadowPasses TechnicalRenderer::shadow_passes(const AliasItem& item,
 void TechnicalRenderer::draw_faces(const classic::FrameView& view, AliasPass pass) {
     bool begun = false;
     for (const AliasItem& item : items_) {
-        if (!in_pass(*item.entity, static_cast<int>(pass))) continue;
+        if (classic::alias_pass_of(*item.entity) != pass) continue;
         if (!begun) faces_.begin(view, settings.shading);
         begun = true;
         faces_.draw(view, *item.entity, *item.gpu, item.skin, item.fullbright,
@@ -301,7 +291,7 @@ void TechnicalRenderer::draw_alias_edges(const EdgeFrameUniforms& uniforms, Alia
     bool begun = false;
     for (const AliasItem& item : items_) {
         const EdgeSpan span = item.edge_span;
-        if (span.edge_count == 0 || !in_pass(*item.entity, static_cast<int>(pass))) continue;
+        if (span.edge_count == 0 || classic::alias_pass_of(*item.entity) != pass) continue;
         if (!begun) alias_edges_.begin(uniforms, settings.edges);
         begun = true;
         if (run.edge_count > 0 && run.first_edge + run.edge_count == span.first_edge) {

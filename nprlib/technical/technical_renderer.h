@@ -52,7 +52,7 @@ class TechnicalRenderer {
     int live_gl_objects() const { return tracker_.total_live() + classic_.live_gl_objects(); }
 
   private:
-    enum class AliasPass { opaque, translucent, view_model };
+    using AliasPass = classic::AliasPass;
     // What one alias entity needs to draw this frame.
     struct AliasItem {
         const nqr_entity* entity = nullptr;

@@ -10,6 +10,7 @@
 
 #include "classic/alias_model_gpu.h"
 #include "classic/frame_view.h"
+#include "nprlib_test_sphere.h"
 #include "nprlib_test_support.h"
 #include "technical/alias_face_drawer.h"
 #include "technical/shading_model.h"
@@ -24,69 +25,7 @@ using technical::ShadingMode;
 using technical::ShadingSettings;
 
 constexpr uint8_t kGrey = 150;  // palette index of (150, 150, 150)
-constexpr float kSphereRadius = 30.0f;
 const Rgb kBackground{10, 20, 30};
-
-// ------------------------------------------------------------------ synthetic models
-
-// Adds triangle (a, b, c) of pose 0 wound clockwise seen from outside (Quake's order), outside
-// being away from `inside`.
-void add_outward_triangle(AliasBuilder& b, glm::vec3 inside, int i0, int i1, int i2) {
-    auto position = [&](int i) {
-        const auto& v = b.poses[0][i];
-        return glm::vec3(v[0], v[1], v[2]) * b.scale + b.origin;
-    };
-    const glm::vec3 p0 = position(i0), p1 = position(i1), p2 = position(i2);
-    const glm::vec3 counter_clockwise_normal = glm::cross(p1 - p0, p2 - p0);
-    const bool outward = glm::dot(counter_clockwise_normal, (p0 + p1 + p2) / 3.0f - inside) > 0;
-    if (outward) {
-        b.triangles.push_back({1, i0, i2, i1});
-    } else {
-        b.triangles.push_back({1, i0, i1, i2});
-    }
-}
-
-int add_vertex(AliasBuilder& b, glm::vec3 model_position, glm::ivec2 st) {
-    if (b.poses.empty()) b.poses.emplace_back();
-    const glm::ivec3 packed = glm::ivec3(glm::round((model_position - b.origin) / b.scale));
-    b.poses[0].push_back({static_cast<uint8_t>(packed.x), static_cast<uint8_t>(packed.y),
-                          static_cast<uint8_t>(packed.z)});
-    b.st.push_back({0, st.x, st.y});
-    return static_cast<int>(b.poses[0].size() - 1);
-}
-
-// A sphere of kSphereRadius around the model origin with its poles on the X axis (the -X pole
-// faces a camera on -X), every vertex at skin texel `st`.
-void make_sphere(AliasBuilder& b, glm::ivec2 st, int stacks = 16, int slices = 24) {
-    b.scale = glm::vec3(0.25f);
-    b.origin = glm::vec3(-32.0f);
-    const float pi = std::numbers::pi_v<float>;
-    const int near_pole = add_vertex(b, {-kSphereRadius, 0, 0}, st);
-    for (int i = 1; i < stacks; ++i) {
-        const float theta = pi * i / stacks;
-        for (int j = 0; j < slices; ++j) {
-            const float phi = 2.0f * pi * j / slices;
-            const float ring = kSphereRadius * std::sin(theta);
-            add_vertex(
-                b, {-kSphereRadius * std::cos(theta), ring * std::cos(phi), ring * std::sin(phi)},
-                st);
-        }
-    }
-    const int far_pole = add_vertex(b, {kSphereRadius, 0, 0}, st);
-    auto ring_vertex = [&](int i, int j) { return 1 + (i - 1) * slices + j % slices; };
-    const glm::vec3 centre(0.0f);
-    for (int j = 0; j < slices; ++j) {
-        add_outward_triangle(b, centre, near_pole, ring_vertex(1, j), ring_vertex(1, j + 1));
-        add_outward_triangle(b, centre, far_pole, ring_vertex(stacks - 1, j),
-                             ring_vertex(stacks - 1, j + 1));
-        for (int i = 1; i + 1 < stacks; ++i) {
-            add_outward_triangle(b, centre, ring_vertex(i, j), ring_vertex(i + 1, j),
-                                 ring_vertex(i + 1, j + 1));
-            add_outward_triangle(b, centre, ring_vertex(i, j), ring_vertex(i + 1, j + 1),
-                                 ring_vertex(i, j + 1));
-        }
-    }
-}
 
 // ------------------------------------------------------------------ expected colours
 
@@ -239,15 +178,10 @@ TEST_F(TechnicalShadingTest, GoochFollowsTheLightAroundTheModel) {
     int checked = 0, wrong = 0;
     for (int y = 0; y < kSize; y += 3) {
         for (int x = 0; x < kSize; x += 3) {
-            // Camera ray through the pixel centre (fov 90: ndc = tangent), hit on the sphere.
-            const float ndc_x = (x + 0.5f) / (kSize / 2.0f) - 1.0f;
-            const float ndc_y = (y + 0.5f) / (kSize / 2.0f) - 1.0f;
-            const glm::vec3 ray = glm::normalize(glm::vec3(1.0f, -ndc_x, ndc_y));
-            const float b = glm::dot(eye, ray);
-            const float disc = b * b - (glm::dot(eye, eye) - kSphereRadius * kSphereRadius);
-            if (disc < 0.0f) continue;
-            const glm::vec3 n = glm::normalize(eye + ray * (-b - std::sqrt(disc)));
-            if (-glm::dot(n, ray) < 0.5f) continue;  // near the outline: facets show
+            const std::optional<glm::vec3> hit = sphere_normal_at_pixel(x, y, eye);
+            if (!hit) continue;
+            const glm::vec3 n = *hit;
+            if (glm::dot(n, glm::normalize(eye - n * kSphereRadius)) < 0.5f) continue;  // outline
             ++checked;
             const Rgb expected = to_rgb(gooch(kd, glm::dot(n, l), s));
             wrong += !near(image[y * kSize + x], expected, 8);

@@ -1,0 +1,53 @@
+// Draws alias models (MDL) in the illustrative style: ill_shade() per pixel (illustrative_glsl.h)
+// on the skin texel, with the model's own mesh (IllustrativeModel: smooth, crease-preserving
+// normals per pose, blended like positions), its skin masks and warp ramp, lit by the entity's
+// ambient cube and local lights. Everything else as the classic drawer does it: pose blending,
+// fullbright skin pixels added unlit, holey models cut out, Quake's clockwise winding culled,
+// alpha < 1 blended without depth writes, view-space normals written to location 1.
+#pragma once
+
+#include <string>
+
+#include "classic/alias_model_gpu.h"
+#include "classic/frame_view.h"
+#include "gl/program.h"
+#include "illustrative/illustrative_glsl.h"
+#include "illustrative/illustrative_model.h"
+#include "illustrative/illustrative_settings.h"
+#include "nqr_renderer.h"
+
+namespace nq::npr::illustrative {
+
+// The textures one entity is drawn with. 0 for fullbright, masks or warp: a neutral default
+// (black, k_s = k_r = 1 with mid exponent, the drawer's built-in ramp).
+struct AliasShadingTextures {
+    GLuint skin = 0;
+    GLuint fullbright = 0;
+    GLuint masks = 0;
+    GLuint warp = 0;
+};
+
+class AliasShadingDrawer {
+  public:
+    bool init(gl::ObjectTracker* tracker, std::string& error);
+    void reset();
+
+    // A pass over many entities (see technical's AliasFaceDrawer): begin sets the program,
+    // per-pass uniforms and culling; draw per entity; end restores the classic state.
+    // `default_warp`: the ramp for entities whose textures name none.
+    bool begin(const classic::FrameView& view, const IllustrativeSettings& settings,
+               GLuint default_warp);
+    void draw(const classic::FrameView& view, const nqr_entity& entity,
+              const classic::AliasModelGpu& gpu, const IllustrativeModel& model,
+              const AliasShadingTextures& textures, const MaterialParams& material);
+    void end();
+
+  private:
+    gl::ObjectTracker* tracker_ = nullptr;
+    gl::Program program_;
+    gl::Texture black_, neutral_masks_;
+    const IllustrativeSettings* settings_ = nullptr;  // this pass's
+    GLuint default_warp_ = 0;
+};
+
+}  // namespace nq::npr::illustrative
