@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "illustrative/skin_masks.h"
+
 namespace nq::npr::illustrative {
 
 const char* const kIllustrativeLibrary = R"(
@@ -115,7 +117,7 @@ void set_illustrative_uniforms(gl::Program& program, const IllustrativeSettings&
     glUniform3f(program.location("u_half_lambert"), settings.half_lambert_alpha,
                 settings.half_lambert_beta, settings.half_lambert_gamma);
     glUniform1i(program.location("u_show"), static_cast<int>(settings.show));
-    glUniform1f(program.location("u_mask_exponent_span"), kMaskExponentMax - kMaskExponentMin);
+    glUniform1f(program.location("u_mask_exponent_span"), kMaxSpecularExponent - kMinSpecularExponent);
 }
 
 void set_entity_lighting(gl::Program& program, const nqr_entity& entity,
@@ -145,7 +147,7 @@ void set_entity_lighting(gl::Program& program, const nqr_entity& entity,
     const bool skin_exponent = settings.skin_masks && material.exponent_from_skin;
     const bool skin_rim = settings.skin_masks && material.rim_mask;
     glUniform3f(program.location("u_mask_use"), skin_exponent ? 1.0f : 0.0f,
-                skin_rim ? 1.0f : 0.0f, kMaskExponentMin);
+                skin_rim ? 1.0f : 0.0f, kMinSpecularExponent);
 }
 
 }  // namespace nq::npr::illustrative

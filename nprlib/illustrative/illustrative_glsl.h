@@ -23,10 +23,6 @@
 
 namespace nq::npr::illustrative {
 
-// The skin-mask texture's G channel maps linearly onto this exponent range (skin_masks.h).
-inline constexpr float kMaskExponentMin = 1.0f;
-inline constexpr float kMaskExponentMax = 150.0f;
-
 // Declares (GLSL): the uniforms below and
 //   vec3 ill_ambient_cube(vec3 n)
 //   vec3 ill_shade(vec3 kd, vec3 position, vec3 n, vec3 v, vec4 masks)   world space, unit n, v

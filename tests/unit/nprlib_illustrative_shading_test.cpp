@@ -14,6 +14,8 @@
 #include "gl/texture_upload.h"
 #include "illustrative/alias_shading_drawer.h"
 #include "illustrative/illustrative_model.h"
+#include "illustrative/illustrative_models.h"
+#include "illustrative/warp_ramp.h"
 #include "nprlib_test_sphere.h"
 #include "nprlib_test_support.h"
 
@@ -258,6 +260,28 @@ TEST_F(IllustrativeShadingTest, SwappingTheRampChangesExactlyTheDiffuseTerm) {
         EXPECT_EQ(draw(s, unchanged, ramp_a_.id()), draw(s, unchanged, ramp_b_.id()))
             << "term " << static_cast<int>(unchanged);
     }
+}
+
+TEST_F(IllustrativeShadingTest, TheTf2RampShadesCoolNotBlackWithARedTerminatorAndGreyLight) {
+    upload_sphere(kGrey);
+    gl::Texture tf2 = illustrative::create_warp_texture(&tracker_, illustrative::tf2_warp_ramp());
+    const IllustrativeSettings s = terms(false, false, false);
+    const glm::vec2 pole = project(make_camera(kEye, {}), {-kSphereRadius, 0.0f, 0.0f});
+    auto pole_lit_at = [&](float n_dot_l) {  // the pole's normal is -X
+        light_from({-n_dot_l, 0.0f, std::sqrt(std::max(0.0f, 1.0f - n_dot_l * n_dot_l))});
+        return draw(s, ShowTerm::final, tf2.id())[int(pole.y) * kSize + int(pole.x)];
+    };
+    const Rgb dark = pole_lit_at(-1.0f), terminator = pole_lit_at(0.0f), lit = pole_lit_at(1.0f);
+    // Facing away: cool (blue above red), and not black.
+    EXPECT_GT(dark.b, dark.r + 10) << dark;
+    EXPECT_GT(brightness(dark), 20) << dark;
+    // The terminator band: red above green and blue.
+    EXPECT_GT(terminator.r, terminator.g + 5) << terminator;
+    EXPECT_GT(terminator.r, terminator.b + 5) << terminator;
+    // Lit: grey, brighter than the grey skin itself (the ramp ends above mid-grey, read x2).
+    EXPECT_LE(std::abs(lit.r - lit.g) + std::abs(lit.g - lit.b), 12) << lit;
+    EXPECT_GT(brightness(lit), brightness(palette_colour(palette_, kGrey))) << lit;
+    tf2.reset();
 }
 
 // ------------------------------------------------------------------ view-dependent terms
