@@ -17,6 +17,8 @@
 #include "formats/bsp.h"
 #include "fs/vfs.h"
 #include "render/view_transform.h"
+#include "engine_output_checks.h"
+#include "support/shared_engine_run.h"
 #include "support/test_data.h"
 
 namespace nq::test {
@@ -148,5 +150,15 @@ class DemoReplay {
     ViewResult view_;
     VisibleEntityList visible_;
 };
+
+// The run ended cleanly with one timedemo line counting every frame of `demo_file` (as an
+// in-process replay counts them).
+inline void expect_whole_timedemo(const SharedRun& run, const std::string& demo_file) {
+    expect_clean_exit(run.result);
+    const auto lines = timedemo_lines(run.result.out);
+    ASSERT_EQ(lines.size(), 1u) << run.result.out;
+    Vfs vfs = mount_lq1();
+    EXPECT_EQ(lines[0].frames, timedemo_frame_count(vfs, demo_file));
+}
 
 }  // namespace nq::test

@@ -260,16 +260,6 @@ TEST(TechnicalShowroom, PenumbraAddsALighterFringeAroundADarkerUmbra) {
 
 // ------------------------------------------------------------------ demos
 
-// The run ended cleanly with one timedemo line counting every frame of `demo_file` (as an
-// in-process replay counts them).
-void expect_whole_timedemo(const SharedRun& run, const std::string& demo_file) {
-    expect_clean_exit(run.result);
-    const auto lines = timedemo_lines(run.result.out);
-    ASSERT_EQ(lines.size(), 1u) << run.result.out;
-    Vfs vfs = mount_lq1();
-    EXPECT_EQ(lines[0].frames, timedemo_frame_count(vfs, demo_file));
-}
-
 constexpr uint64_t kDemoPausedFrame = 760;  // the monster gallery (see engine_runs.h)
 
 // demo.dem entirely under technical (at 640x480, so 2-pixel edges), with an id reference and
