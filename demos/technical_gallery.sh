@@ -8,18 +8,10 @@
 # Needs ImageMagick (montage, convert) for the labelled contact sheets. The status bar and the
 # screen tints are off, so the pictures show the models.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
-out=$root/docs/images/technical
+style=technical
+out=$(cd "$(dirname "$0")/.." && pwd)/docs/images/technical
 [ "${1:-}" = "--out" ] && out=$2
-engine=$build/bin/nprquake
-[ -x "$engine" ] || { echo "technical_gallery.sh: build first ($engine missing)" >&2; exit 1; }
-[ -d "$data/lq1" ] || { echo "technical_gallery.sh: no game data at $data/lq1" >&2; exit 1; }
-command -v montage >/dev/null || { echo "technical_gallery.sh: needs ImageMagick" >&2; exit 1; }
-work=$(mktemp -d)
-trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
-mkdir -p "$out" "$work/user/id1" "$work/user/lq1"
+source "$(dirname "$0")/gallery_lib.sh"
 
 # The defaults every picture starts from (the cvar defaults, written out so a user's config
 # cannot leak in).
@@ -54,66 +46,11 @@ settings=(
     "edges_off|tech_silhouettes 0; tech_creases 0; tech_world_edges 0"
 )
 
-script() {  # scene-prefix -> a config script taking every picture
-    local prefix=$1 entry name cmds
-    for entry in "${settings[@]}"; do
-        name=${entry%%|*}
-        cmds=${entry#*|}
-        echo "$defaults" | tr '\n' ' '
-        echo
-        echo "$cmds"
-        echo "wait; wait; screenshot $work/${prefix}_$name.png"
-    done
-}
-
-# The showroom at a fixed instant.
-script showroom > "$work/user/id1/gallery.cfg"
-SDL_VIDEODRIVER=offscreen "$engine" -userdir "$work/user" -basedir "$work/nodata" -width 640 \
-    -height 480 +con_notifytime 0 +r_plugin technical +showroom_time 5 +wait +exec gallery.cfg \
-    +quit > "$work/showroom.log" 2>&1
-
-# demo.dem: classic and technical on the same paused frames; at the last one (the monster
-# gallery) every setting too, then quit.
 frames="300 600 760"
-compare() {  # frame -> commands taking both styles' screenshots
-    echo "pause 1; r_plugin classic; wait; wait; screenshot $work/classic_$1.png; r_plugin technical; wait; wait; screenshot $work/technical_$1.png"
-}
-{
-    echo "demo_at 300 \"$(compare 300); pause 0\""
-    echo "demo_at 600 \"$(compare 600); pause 0\""
-    echo "demo_at 760 \"$(compare 760); exec gallery.cfg\""
-} > "$work/user/lq1/frames.cfg"
-script demo > "$work/user/lq1/gallery.cfg"
-echo "quit" >> "$work/user/lq1/gallery.cfg"
-SDL_VIDEODRIVER=offscreen "$engine" -userdir "$work/user" -basedir "$data" -game lq1 -width 640 \
-    -height 480 +con_notifytime 0 +scr_centertime 0 +scr_drawhud 0 +gl_polyblend 0 \
-    +exec frames.cfg +timedemo demo \
-    > "$work/demo.log" 2>&1 || true
-
-sheet() {  # output title files...
-    local output=$1 title=$2; shift 2
-    montage "$@" -tile "$#x1" -geometry 480x360+4+4 -font DejaVu-Sans -pointsize 16 -title "$title" \
-        -quality 85 "$output"
-}
-labelled() {  # prefix name caption -> path of a labelled copy
-    local src=$work/$1_$2.png dst=$work/label_$1_$2.png
-    [ -f "$src" ] || { echo "technical_gallery.sh: missing $src (see $work/*.log)" >&2; return 1; }
-    montage -label "$3" "$src" -geometry +0+0 -font DejaVu-Sans -pointsize 16 "$dst"
-    echo "$dst"
-}
-
-for f in $frames; do
-    sheet "$out/demo_frame_$f.jpg" "demo.dem frame $f" \
-        "$(labelled classic "$f" "classic")" "$(labelled technical "$f" "technical")"
-done
-group() {  # output title names...
-    local output=$1 title=$2 scene name files=(); shift 2
-    for scene in showroom demo; do
-        files=()
-        for name in "$@"; do files+=("$(labelled "$scene" "$name" "$name")"); done
-        sheet "$out/${scene}_$output.jpg" "$title" "${files[@]}"
-    done
-}
+gallery_init
+gallery_showroom
+gallery_demo "$frames"
+compare_sheets "$frames"
 group shading "shading: classic, Gooch 98, metal (Gooch 99)" classic_shading gooch metal
 group splashback "splash-back off / on" splashback_off splashback_on
 group white_addition "white addition on all edges, w = 0, 0.4, 1" white_0 white_0.4 white_1
