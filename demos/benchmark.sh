@@ -4,7 +4,7 @@
 # a style gallery (the same demo frame in every style, in one engine run) and the report
 # (demos/bench_report.py): report.html (self-contained), report.md, charts as PNG.
 #
-# usage: demos/benchmark.sh [--quick] [--demos "demo demo2"] [--styles "classic technical"]
+# usage: demos/benchmark.sh [--quick] [--demos "demo demo2"] [--styles "classic technical illustrative"]
 #                           [--sizes "640x480 1024x768"] [--runs N] [--peer quakespasm|none]
 #                           [--gallery-frame N] [--out DIR]
 #   --quick   demo.dem at 640x480, 2 rounds: under 5 minutes (numbers to check the tooling,
@@ -19,7 +19,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 data=${NPRQ_DATA:-$root/../shared/data}
 build=${BUILD:-$root/build/release}
 demos="demo demo2"
-styles="classic technical"
+styles="classic technical illustrative"
 sizes="640x480 1024x768"
 runs=3
 peer=auto
