@@ -45,6 +45,10 @@ struct DlightList {
     uint32_t count = 0;
 };
 
+// visible_i above: the fraction (0..1, in steps of 1 / kVisibilityProbes) of the probe points
+// around a light at `light` that `point` sees.
+float light_visibility(const Bsp& bsp, const glm::vec3& point, const glm::vec3& light);
+
 // The weight of a light of `brightness` and `reach` at `distance`, before occlusion.
 float light_weight(float brightness, float reach, float distance);
 
