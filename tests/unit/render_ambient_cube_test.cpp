@@ -133,18 +133,23 @@ double corner_form_factor(double a, double b, double c) {
     return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * std::numbers::pi);
 }
 
-// Form factor from p, facing +X (sign 1) or -X (sign -1), to that x wall of the room.
-double x_wall_form_factor(const glm::vec3& p, int sign) {
+// Form factor from p, facing +axis (sign 1) or -axis (sign -1), to that wall of the room.
+double wall_form_factor(const glm::vec3& p, int axis, int sign) {
     const auto& lo = test::box_room::kRoomMins;
     const auto& hi = test::box_room::kRoomMaxs;
-    const double c = sign > 0 ? hi[0] - p.x : p.x - lo[0];
-    const double ys[2] = {p.y - lo[1], hi[1] - p.y};
-    const double zs[2] = {p.z - lo[2], hi[2] - p.z};
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const double c = sign > 0 ? hi[axis] - p[axis] : p[axis] - lo[axis];
+    const double us[2] = {p[u] - lo[u], hi[u] - p[u]};
+    const double vs[2] = {p[v] - lo[v], hi[v] - p[v]};
     double sum = 0;
-    for (double a : ys) {
-        for (double b : zs) sum += corner_form_factor(a, b, c);
+    for (double a : us) {
+        for (double b : vs) sum += corner_form_factor(a, b, c);
     }
     return sum;
+}
+
+double x_wall_form_factor(const glm::vec3& p, int sign) {
+    return wall_form_factor(p, 0, sign);
 }
 
 // ---- definitions --------------------------------------------------------------------------
@@ -291,6 +296,29 @@ TEST(RenderAmbientCube, LightSamplerHandsTheFieldsCubeOnWithDynamicLights) {
     EXPECT_NEAR(light.ambient_cube[2][0], (cube.faces[2].r + 100) / 128, 1e-4f);
     EXPECT_NEAR(light.ambient_cube[3][0], cube.faces[3].r / 128, 1e-5f);
     EXPECT_NEAR(light.ambient_cube[0][0], cube.faces[0].r / 128, 1e-5f);
+}
+
+// Floor and ceiling made sky ("sky1"), the walls black: the +Z face gathers the sky level
+// (times the sky texture's colour, white here) over the ceiling's form factor; no sky level,
+// no light.
+TEST(RenderAmbientCube, SkySendsItsLevelWhereRaysMeetIt) {
+    test::SynthBsp synth = test::make_box_room();
+    synth.textures[1].name = "sky1";  // the texture of floor and ceiling
+    const LitRoom room(synth, true, [](Bsp& bsp) { light_walls(bsp, 0, 0, 0); });
+    AmbientBakeSettings settings;
+    settings.sky_level = 100;
+    const AmbientGatherer gatherer(room.bsp(), room.data->lighting_rgb(), room.reflectivity,
+                                   settings);
+    const glm::vec3 p(20, -10, 40);
+    const AmbientCube cube = gatherer.gather(p);
+    const double up = 100 * wall_form_factor(p, 2, 1);
+    const double down = 100 * wall_form_factor(p, 2, -1);
+    EXPECT_NEAR(cube.faces[4].g, up, 0.2 * up);
+    EXPECT_NEAR(cube.faces[5].g, down, 0.2 * down);
+    settings.sky_level = 0;
+    const AmbientGatherer no_sky(room.bsp(), room.data->lighting_rgb(), room.reflectivity,
+                                 settings);
+    for (const glm::vec3& face : no_sky.gather(p).faces) EXPECT_EQ(face, glm::vec3(0));
 }
 
 // ---- smoothness across a leaf boundary ----------------------------------------------------
