@@ -279,7 +279,10 @@ void Showroom::fill_light(const std::array<float, 3>& at, nqr_entity_light& out)
     // ABI 1.4's split: the cube holds the even light around, the one lamp is the light list.
     for (auto& face : out.ambient_cube) face[0] = face[1] = face[2] = out.ambient;
     out.num_lights = 1;
-    for (nqr_light_source& source : out.lights) source = nqr_light_source{sizeof(nqr_light_source)};
+    for (nqr_light_source& source : out.lights) {
+        source = nqr_light_source{};
+        source.size = sizeof(nqr_light_source);
+    }
     for (int k = 0; k < 3; ++k) {
         out.lights[0].position[k] = light[k];
         out.lights[0].color[k] = out.directional;

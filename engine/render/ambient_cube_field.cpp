@@ -72,24 +72,19 @@ bool AmbientCubeField::sees(const glm::vec3& point, const AmbientSample& sample)
 bool AmbientCubeField::nearest_fallback(const glm::vec3& point, AmbientCube& out) const {
     float best = std::numeric_limits<float>::infinity();
     uint32_t nearest = 0;
-    for (int ring = 0; ring <= kFallbackRings && !std::isfinite(best); ++ring) {
-        // A ring's points are not all nearer than the next ring's: finish one ring further.
-        grid_.for_each_in_ring(point, ring, [&](uint32_t index) {
-            const float d = glm::length(samples_[index].position - point);
-            if (d < best) {
-                best = d;
-                nearest = index;
-            }
-        });
-        if (std::isfinite(best) && ring < kFallbackRings) {
-            grid_.for_each_in_ring(point, ring + 1, [&](uint32_t index) {
-                const float d = glm::length(samples_[index].position - point);
-                if (d < best) {
-                    best = d;
-                    nearest = index;
-                }
-            });
+    auto offer = [&](uint32_t index) {
+        const float d = glm::length(samples_[index].position - point);
+        if (d < best) {
+            best = d;
+            nearest = index;
         }
+    };
+    // Ring by ring outward; a nearer sample may still sit in the ring after the first that
+    // holds one, so that one is searched too.
+    int last = kFallbackRings;
+    for (int ring = 0; ring <= last; ++ring) {
+        grid_.for_each_in_ring(point, ring, offer);
+        if (std::isfinite(best) && last > ring + 1) last = ring + 1;
     }
     if (!std::isfinite(best)) return false;
     out = samples_[nearest].cube;
