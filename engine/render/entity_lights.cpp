@@ -98,7 +98,7 @@ float light_level(const LightEntity& light, float distance) {
 
 LightContributions strongest_lights(const Bsp& bsp, std::span<const LightEntity> lights,
                                     const glm::vec3& point, std::span<const float> lightstyles,
-                                    DlightList dlights) {
+                                    DlightList dlights, VisibilityCache* traced) {
     Strongest<kMaxLightCandidates> candidates;
     for (size_t i = 0; i < lights.size(); ++i) {
         candidates.offer(entity_contribution(lights[i], uint32_t(i), point, lightstyles));
@@ -111,7 +111,9 @@ LightContributions strongest_lights(const Bsp& bsp, std::span<const LightEntity>
         if (best.count == kMaxEntityLights && best.items[best.count - 1].strength >= c.strength) {
             break;
         }
-        c.color *= light_visibility(bsp, point, c.position);
+        const float visible = light_visibility(bsp, point, c.position);
+        if (traced) traced->add(c.key, visible);
+        c.color *= visible;
         c.strength = mean_of(c.color);
         keep_strongest(best, c);
     }

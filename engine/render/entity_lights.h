@@ -54,9 +54,10 @@ void keep_strongest(LightContributions& list, const LightContribution& light);
 float light_level(const LightEntity& light, float distance);
 
 // The strongest lights at `point` (see above).
+// The light entities' visibilities it traces go to `traced` when given.
 LightContributions strongest_lights(const Bsp& bsp, std::span<const LightEntity> lights,
                                     const glm::vec3& point, std::span<const float> lightstyles,
-                                    DlightList dlights);
+                                    DlightList dlights, VisibilityCache* traced = nullptr);
 
 // Writes `lights` into out.num_lights / out.lights (sizes included), as they are.
 void store_lights(const LightContributions& lights, nqr_entity_light& out);

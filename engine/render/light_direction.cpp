@@ -99,7 +99,7 @@ float light_weight(float brightness, float reach, float distance) {
 
 glm::vec3 dominant_light_direction(const Bsp& bsp, std::span<const LightEntity> lights,
                                    const glm::vec3& point, std::span<const float> lightstyles,
-                                   DlightList dlights) {
+                                   DlightList dlights, const VisibilityCache* traced) {
     TopLights top;
     for (const LightEntity& light : lights) {
         const float distance = glm::length(light.origin - point);
@@ -112,7 +112,9 @@ glm::vec3 dominant_light_direction(const Bsp& bsp, std::span<const LightEntity> 
     for (int i = 0; i < top.count; ++i) {
         const Candidate& c = top.items[i];
         const glm::vec3 dir = (c.light->origin - point) / c.distance;
-        sum += dir * c.weight * probe_visibility(bsp, point, c.light->origin, dir);
+        const float* known = traced ? traced->find(uint32_t(c.light - lights.data())) : nullptr;
+        sum +=
+            dir * c.weight * (known ? *known : probe_visibility(bsp, point, c.light->origin, dir));
     }
     sum += dlight_sum(point, dlights);
     const float length = glm::length(sum);

@@ -104,7 +104,10 @@ void LightSampler::sample(const EntityLightQuery& query, std::span<const float> 
     const float shade = std::min(level, kMaxTotalLevel - ambient);
     out.ambient = ambient / kNormalLevel;
     out.directional = shade / kNormalLevel;
-    store3(dominant_light_direction(bsp_, lights_, query.origin, lightstyles, dlights),
+    VisibilityCache traced;
+    const LightContributions strongest =
+        strongest_lights(bsp_, lights_, query.origin, lightstyles, dlights, &traced);
+    store3(dominant_light_direction(bsp_, lights_, query.origin, lightstyles, dlights, &traced),
            out.direction);
     store3(tint_of(total), out.color);
     const AmbientCube cube = ambient_cube(query.origin, ground);
@@ -113,8 +116,6 @@ void LightSampler::sample(const EntityLightQuery& query, std::span<const float> 
         add_dlights(query.origin, dlights, &kCubeAxes[i], nullptr, face);
         store3(face / kNormalLevel, out.ambient_cube[i]);
     }
-    const LightContributions strongest =
-        strongest_lights(bsp_, lights_, query.origin, lightstyles, dlights);
     store_lights(strongest, out);
     if (lights) *lights = strongest;
 }

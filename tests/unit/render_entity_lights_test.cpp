@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "formats/entities.h"
 #include "render/entity_lights.h"
 #include "render/light_list_smoother.h"
 #include "render/light_sampler.h"
@@ -149,6 +150,32 @@ TEST(RenderEntityLights, DynamicLightsAreListedWithRadiusMinusDistance) {
     EXPECT_NEAR(out.lights[0].color[1], 75.0f / 128, 1e-4f);
     EXPECT_NEAR(out.lights[0].color[2], 0.0f, 1e-6f);
     EXPECT_NEAR(out.lights[1].color[0], 40.0f / 128, 1e-4f);
+}
+
+// The strongest-lights list hands the direction the visibilities it traced: the direction is
+// exactly what it is when traced on its own.
+TEST(RenderEntityLights, SharedVisibilitiesLeaveTheDirectionUnchanged) {
+    const auto data = render_test::load_map("maps/lqdm4_a6.bsp");
+    auto entities = parse_entities(data->bsp().entities, "entities");
+    ASSERT_TRUE(entities);
+    std::vector<std::string> warnings;
+    const std::vector<LightEntity> lights = find_light_entities(*entities, warnings);
+    const auto styles = normal_lightstyles();
+    size_t shared = 0, points = 0;
+    for (const Entity& e : entities->entities) {
+        const auto o = find_vec3(e, "origin");
+        if (!o) continue;
+        const glm::vec3 p((*o)[0], (*o)[1], (*o)[2] + 8);
+        VisibilityCache traced;
+        strongest_lights(data->bsp(), lights, p, styles, {}, &traced);
+        shared += traced.count > 0;
+        ++points;
+        const glm::vec3 alone = dominant_light_direction(data->bsp(), lights, p, styles, {});
+        const glm::vec3 with =
+            dominant_light_direction(data->bsp(), lights, p, styles, {}, &traced);
+        EXPECT_EQ(alone, with) << p.x << " " << p.y << " " << p.z;
+    }
+    EXPECT_GT(shared * 2, points);
 }
 
 // ---- fading -------------------------------------------------------------------------------
