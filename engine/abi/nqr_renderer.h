@@ -285,11 +285,13 @@ typedef struct nqr_camera {
 } nqr_camera;
 
 #define NQR_MAX_ENTITY_LIGHTS 4
+
 /* Since 1.4. One local light that matters for an entity (map light entity or dynamic light). */
 typedef struct nqr_light_source {
     uint32_t size;
     float position[3]; /* world */
-    float color[3];    /* RGB light arriving at the entity's origin, ambient's scale (1 = lightmap 128): Quake's linear falloff, line of sight and the fade weight applied */
+    float color[3];    /* RGB light arriving at the entity's origin, ambient's scale (1 = lightmap
+                          128): Quake's linear falloff, line of sight and the fade weight applied */
 } nqr_light_source;
 
 /* What lights an entity, sampled by the engine from the map at the entity's origin. */
@@ -299,9 +301,14 @@ typedef struct nqr_entity_light {
     float directional;  /* strength of the dominant light, same scale */
     float direction[3]; /* unit vector in world space pointing from the entity toward it */
     float color[3];     /* tint of the lightmap under the entity (1,1,1 for white light) */
-    /* Irradiance arriving from +X, -X, +Y, -Y, +Z, -Z (world), RGB: Valve's ambient cube. */
+    /* Irradiance arriving from +X, -X, +Y, -Y, +Z, -Z (world), RGB, ambient's scale: Valve's
+     * ambient cube. Since 1.4 baked at level load from the light the map's surfaces send back
+     * (lightmap times texture colour, sky, cosine-weighted over 162 directions per sample
+     * point, light styles at normal), blended between nearby samples, plus dynamic lights. */
     float ambient_cube[6][3];
-    /* Since 1.4: the strongest lights at the entity, strongest first; each fades in and out over time, so nothing pops as lights enter or leave the set. */
+    /* Since 1.4: the strongest lights at the entity, strongest first; each fades in and out
+     * over time, so nothing pops as lights enter or leave the set. Walk the array with nqr_at
+     * (stride lights[0].size), and only when this struct's size covers it. */
     uint32_t num_lights;
     nqr_light_source lights[NQR_MAX_ENTITY_LIGHTS];
 } nqr_entity_light;

@@ -9,6 +9,12 @@ void Engine::register_level_models(Level& level) {
     for (const auto& model : level.models().models()) dispatch_->register_model(model->abi());
     level_models_registered_ = true;
     view_state_ = {};
+    if (const Cvar* developer = host_.cvars().find("developer"); developer && developer->value()) {
+        const AmbientCubeField* field = level.ambient_field();
+        print("ambient cube field: " + std::to_string(field ? field->samples().size() : 0) +
+              " samples baked in " + std::to_string(int(level.ambient_bake_seconds() * 1000.0)) +
+              " ms");
+    }
 }
 
 void Engine::release_level_models() {

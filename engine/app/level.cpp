@@ -1,5 +1,7 @@
 #include "app/level.h"
 
+#include <chrono>
+
 #include "client/model_info.h"
 #include "formats/entities.h"
 
@@ -21,6 +23,7 @@ void Level::clear() {
     occluders_.reset();
     culler_.reset();
     lights_.reset();
+    ambient_.reset();
     ids_.clear();
     world_ = nullptr;
     cache_.clear();
@@ -56,8 +59,19 @@ Result<bool> Level::load(ClientState& client) {
     } else {
         warnings_.push_back(entities.error().to_string());
     }
-    lights_ = std::make_unique<LightSampler>(data->bsp(), data->lighting_rgb(), std::move(lights));
+    bake_ambient_field(*data);
+    lights_ = std::make_unique<LightSampler>(data->bsp(), data->lighting_rgb(), std::move(lights),
+                                             ambient_.get());
     return true;
+}
+
+void Level::bake_ambient_field(const BrushModelData& data) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<glm::vec3> reflectivity = texture_reflectivity(data.bsp(), palette_);
+    ambient_ = std::make_unique<AmbientCubeField>(
+        AmbientCubeField::bake(data.bsp(), data.lighting_rgb(), reflectivity));
+    ambient_bake_seconds_ =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 nqr_model_id Level::model_id(int index) const {

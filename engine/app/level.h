@@ -4,13 +4,16 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "client/client_state.h"
+#include "render/ambient_cube_field.h"
 #include "render/light_sampler.h"
 #include "render/model_cache.h"
 #include "render/occlusion_culler.h"
+#include "render/surface_reflectivity.h"
 #include "render/world_culler.h"
 
 namespace nq {
@@ -21,8 +24,11 @@ class Level {
 
     // Loads the world (model_names()[1]) and every precached model; missing models become
     // placeholders with a warning. Sets the client's model info. Fails only if the world does.
+    // At load it also bakes the map's ambient cube field (ambient_cube_bake.h), with surface
+    // colours from `palette` (set_palette; without one every surface reflects half).
     Result<bool> load(ClientState& client);
     void clear();
+    void set_palette(const PaletteBytes& palette) { palette_ = palette; }
 
     bool loaded() const { return world_ != nullptr; }
     const ModelCache& models() const { return cache_; }
@@ -33,16 +39,24 @@ class Level {
     WorldCuller* culler() { return culler_.get(); }
     OcclusionCuller* occlusion() { return occlusion_.get(); }
     const LightSampler* light_sampler() const { return lights_.get(); }
+    const AmbientCubeField* ambient_field() const { return ambient_.get(); }
+    // Wall-clock seconds the last load spent baking the ambient cube field.
+    double ambient_bake_seconds() const { return ambient_bake_seconds_; }
     std::vector<std::string> take_warnings();
 
   private:
+    void bake_ambient_field(const BrushModelData& data);
+
     ModelCache cache_;
     const RenderModel* world_ = nullptr;
     std::vector<nqr_model_id> ids_;  // by precache index
     std::unique_ptr<WorldCuller> culler_;
     std::unique_ptr<OccluderMesh> occluders_;
     std::unique_ptr<OcclusionCuller> occlusion_;
+    std::unique_ptr<AmbientCubeField> ambient_;
     std::unique_ptr<LightSampler> lights_;
+    std::optional<PaletteBytes> palette_;
+    double ambient_bake_seconds_ = 0.0;
     std::vector<std::string> warnings_;
 };
 

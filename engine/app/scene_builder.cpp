@@ -260,15 +260,19 @@ void SceneBuilder::add_entity(Level& level, const ClientState& client, const Vis
         query.origin = to_glm(v.origin);
         query.minimum_level = minimum_light(v, client.view_entity());
         query.fullbright = (v.flags & kVisibleFullbright) != 0;
+        LightContributions strongest;
         sampler->sample(query, lightstyles_, DlightList{dlights_.data(), frame_.num_dlights},
-                        e.light);
-        // Smoothed per entity so its light never snaps (e.g. crossing a shadow edge).
+                        e.light, &strongest);
+        // Smoothed per entity so its light never snaps (e.g. crossing a shadow edge) and its
+        // lights fade in and out of its list.
         SmoothedLight& slot = smoothed_[v.number % smoothed_.size()];
         if (slot.model != id) {
             slot.smoother.reset();
+            slot.lights.reset();
             slot.model = id;
         }
         slot.smoother.update(e.light, light_dt_, e.light);
+        slot.lights.update(strongest, light_dt_, e.light);
     }
     by_kind_[kind].push_back(&e);
 }

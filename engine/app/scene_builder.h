@@ -13,6 +13,7 @@
 #include "client/visible_entities.h"
 #include "nqr_renderer.h"
 #include "render/frustum.h"
+#include "render/light_list_smoother.h"
 #include "render/light_smoother.h"
 #include "render/view_transform.h"
 
@@ -77,6 +78,7 @@ class SceneBuilder {
     VisibleEntityList visible_;
     struct SmoothedLight {
         LightSmoother smoother;
+        LightListSmoother lights;  // fades the strongest lights in and out (ABI 1.4)
         nqr_model_id model = 0;
     };
     std::vector<SmoothedLight> smoothed_;

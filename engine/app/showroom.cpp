@@ -276,13 +276,16 @@ void Showroom::fill_light(const std::array<float, 3>& at, nqr_entity_light& out)
         out.direction[k] = d[k] / len;
         out.color[k] = 1.0f;
     }
-    static const float kAxes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                      {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (int f = 0; f < 6; ++f) {
-        float facing = kAxes[f][0] * out.direction[0] + kAxes[f][1] * out.direction[1] +
-                       kAxes[f][2] * out.direction[2];
-        float v = out.ambient + out.directional * std::max(facing, 0.0f);
-        out.ambient_cube[f][0] = out.ambient_cube[f][1] = out.ambient_cube[f][2] = v;
+    // ABI 1.4's split: the cube holds the even light around, the one lamp is the light list.
+    for (auto& face : out.ambient_cube) face[0] = face[1] = face[2] = out.ambient;
+    out.num_lights = 1;
+    for (nqr_light_source& source : out.lights) {
+        source = nqr_light_source{};
+        source.size = sizeof(nqr_light_source);
+    }
+    for (int k = 0; k < 3; ++k) {
+        out.lights[0].position[k] = light[k];
+        out.lights[0].color[k] = out.directional;
     }
 }
 

@@ -54,9 +54,10 @@ bool line_of_sight(const Bsp& bsp, const glm::vec3& from, const glm::vec3& to) {
     return short_by <= kProbeSlack;
 }
 
-// Fraction of the probe points around the light that the point sees.
-float visibility(const Bsp& bsp, const glm::vec3& point, const glm::vec3& light,
-                 const glm::vec3& dir) {
+// Fraction of the probe points around the light that the point sees; `dir` is the unit vector
+// from the point toward the light.
+float probe_visibility(const Bsp& bsp, const glm::vec3& point, const glm::vec3& light,
+                       const glm::vec3& dir) {
     glm::vec3 a, b;
     perpendiculars(dir, a, b);
     const glm::vec3 probes[kVisibilityProbes] = {light, light + a * kProbeOffset,
@@ -81,6 +82,13 @@ glm::vec3 dlight_sum(const glm::vec3& point, DlightList dlights) {
 
 }  // namespace
 
+float light_visibility(const Bsp& bsp, const glm::vec3& point, const glm::vec3& light) {
+    const glm::vec3 to = light - point;
+    const float distance = glm::length(to);
+    if (distance < 1e-3f) return line_of_sight(bsp, point, light) ? 1.0f : 0.0f;
+    return probe_visibility(bsp, point, light, to / distance);
+}
+
 float light_weight(float brightness, float reach, float distance) {
     if (!(brightness > 0.0f)) return 0.0f;
     const float range = std::min(reach, kMaxLightRange);
@@ -91,7 +99,7 @@ float light_weight(float brightness, float reach, float distance) {
 
 glm::vec3 dominant_light_direction(const Bsp& bsp, std::span<const LightEntity> lights,
                                    const glm::vec3& point, std::span<const float> lightstyles,
-                                   DlightList dlights) {
+                                   DlightList dlights, const VisibilityCache* traced) {
     TopLights top;
     for (const LightEntity& light : lights) {
         const float distance = glm::length(light.origin - point);
@@ -104,7 +112,9 @@ glm::vec3 dominant_light_direction(const Bsp& bsp, std::span<const LightEntity> 
     for (int i = 0; i < top.count; ++i) {
         const Candidate& c = top.items[i];
         const glm::vec3 dir = (c.light->origin - point) / c.distance;
-        sum += dir * c.weight * visibility(bsp, point, c.light->origin, dir);
+        const float* known = traced ? traced->find(uint32_t(c.light - lights.data())) : nullptr;
+        sum +=
+            dir * c.weight * (known ? *known : probe_visibility(bsp, point, c.light->origin, dir));
     }
     sum += dlight_sum(point, dlights);
     const float length = glm::length(sum);

@@ -20,6 +20,7 @@
 // over a fraction of a second: that is what makes the direction never jump.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -45,12 +46,38 @@ struct DlightList {
     uint32_t count = 0;
 };
 
+// Visibilities (light_visibility) of light entities already traced from one point, by index
+// into the lights: the strongest-lights list traces the same lights the direction does.
+struct VisibilityCache {
+    static constexpr int kCapacity = 8;
+    std::array<uint32_t, kCapacity> light{};
+    std::array<float, kCapacity> visibility{};
+    int count = 0;
+
+    const float* find(uint32_t index) const {
+        for (int i = 0; i < count; ++i) {
+            if (light[i] == index) return &visibility[i];
+        }
+        return nullptr;
+    }
+    void add(uint32_t index, float value) {
+        if (count == kCapacity) return;
+        light[count] = index;
+        visibility[count++] = value;
+    }
+};
+
+// visible_i above: the fraction (0..1, in steps of 1 / kVisibilityProbes) of the probe points
+// around a light at `light` that `point` sees.
+float light_visibility(const Bsp& bsp, const glm::vec3& point, const glm::vec3& light);
+
 // The weight of a light of `brightness` and `reach` at `distance`, before occlusion.
 float light_weight(float brightness, float reach, float distance);
 
-// Unit vector from `point` toward where its light comes from (see above). Allocation-free.
+// Unit vector from `point` toward where its light comes from (see above). Visibilities found
+// in `traced` (taken at this point, for these lights) are not traced again. Allocation-free.
 glm::vec3 dominant_light_direction(const Bsp& bsp, std::span<const LightEntity> lights,
                                    const glm::vec3& point, std::span<const float> lightstyles,
-                                   DlightList dlights);
+                                   DlightList dlights, const VisibilityCache* traced = nullptr);
 
 }  // namespace nq

@@ -10,6 +10,7 @@ namespace nq {
 namespace {
 
 constexpr uint32_t kMaxLightStyle = 63;
+constexpr float kMaxLightDelay = 5;
 
 std::optional<float> parse_number(std::string_view text) {
     while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
@@ -63,8 +64,9 @@ LightEntity light_from(const Entity& e, const std::array<float, 3>& origin,
     }
     light.wait = number_or(e, "wait", 1.0f, warnings);
     if (!(light.wait > 0)) light.wait = 1.0f;
-    light.falloff =
-        number_or(e, "delay", 0, warnings) == 0 ? LightFalloff::linear : LightFalloff::far_reaching;
+    const float delay = number_or(e, "delay", 0, warnings);
+    light.falloff = delay == 0 ? LightFalloff::linear : LightFalloff::far_reaching;
+    light.delay = delay >= 0 && delay <= kMaxLightDelay ? int(delay) : 0;
     light.color = light_color(e);
     return light;
 }

@@ -24,6 +24,10 @@ struct LightEntity {
     uint32_t style = 0;  // "style": switchable and flickering lights follow lightstyles
     float wait = 1.0f;   // "wait": distance scale of the linear falloff
     LightFalloff falloff = LightFalloff::linear;
+    // "delay" as the light tools read it: 0 linear, 1 inverse distance, 2 inverse square,
+    // 3 infinite, 4 local minimum (infinite here), 5 inverse square from 128 units; other
+    // values count as 0.
+    int delay = 0;
 
     // How far the light reaches (linear: brightness / wait).
     float reach() const;

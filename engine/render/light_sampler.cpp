@@ -13,9 +13,6 @@ constexpr float kMaxAmbientLevel = 128.0f;  // Quake's clamps against overbright
 constexpr float kMaxTotalLevel = 192.0f;
 constexpr float kUnlitMapLevel = 255.0f;
 
-const glm::vec3 kCubeAxes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-
 // A dynamic light's colour scaled so its strongest channel is 1: the light's strength is its
 // radius, the colour only tints it.
 glm::vec3 dlight_tint(const nqr_dlight& d) {
@@ -64,13 +61,14 @@ void fill_fullbright(nqr_entity_light& out) {
     store3({0, 0, 1}, out.direction);
     store3(glm::vec3(1.0f), out.color);
     for (auto& face : out.ambient_cube) store3(glm::vec3(1.0f), face);
+    store_lights(LightContributions{}, out);
 }
 
 }  // namespace
 
 LightSampler::LightSampler(const Bsp& bsp, std::span<const uint8_t> lighting_rgb,
-                           std::vector<LightEntity> lights)
-    : bsp_(bsp), rgb_(lighting_rgb), lights_(std::move(lights)) {}
+                           std::vector<LightEntity> lights, const AmbientCubeField* field)
+    : bsp_(bsp), rgb_(lighting_rgb), lights_(std::move(lights)), field_(field) {}
 
 glm::vec3 LightSampler::light_point(const glm::vec3& point,
                                     std::span<const float> lightstyles) const {
@@ -80,19 +78,19 @@ glm::vec3 LightSampler::light_point(const glm::vec3& point,
     return hit ? sample_lightmap(bsp_, rgb_, *hit, lightstyles) : glm::vec3(0.0f);
 }
 
-glm::vec3 LightSampler::cube_face(const glm::vec3& point, const glm::vec3& axis,
-                                  const glm::vec3& fallback,
-                                  std::span<const float> lightstyles) const {
-    if (rgb_.empty()) return fallback;
-    const auto hit = first_surface_along(bsp_, point, point + axis * kCubeRange, true);
-    if (!hit || hit->sky) return fallback;
-    return sample_lightmap(bsp_, rgb_, *hit, lightstyles);
+AmbientCube LightSampler::ambient_cube(const glm::vec3& point, const glm::vec3& fallback) const {
+    AmbientCube cube;
+    if (field_ && field_->cube_at(point, cube)) return cube;
+    cube.faces.fill(fallback);
+    return cube;
 }
 
 void LightSampler::sample(const EntityLightQuery& query, std::span<const float> lightstyles,
-                          DlightList dlights, nqr_entity_light& out) const {
+                          DlightList dlights, nqr_entity_light& out,
+                          LightContributions* lights) const {
     out = nqr_entity_light{};
     out.size = sizeof(nqr_entity_light);
+    if (lights) *lights = LightContributions{};
     if (query.fullbright) {
         fill_fullbright(out);
         return;
@@ -106,14 +104,20 @@ void LightSampler::sample(const EntityLightQuery& query, std::span<const float> 
     const float shade = std::min(level, kMaxTotalLevel - ambient);
     out.ambient = ambient / kNormalLevel;
     out.directional = shade / kNormalLevel;
-    store3(dominant_light_direction(bsp_, lights_, query.origin, lightstyles, dlights),
+    VisibilityCache traced;
+    const LightContributions strongest =
+        strongest_lights(bsp_, lights_, query.origin, lightstyles, dlights, &traced);
+    store3(dominant_light_direction(bsp_, lights_, query.origin, lightstyles, dlights, &traced),
            out.direction);
     store3(tint_of(total), out.color);
-    for (int i = 0; i < 6; ++i) {
-        glm::vec3 face = cube_face(query.origin, kCubeAxes[i], ground, lightstyles);
+    const AmbientCube cube = ambient_cube(query.origin, ground);
+    for (int i = 0; i < kCubeFaces; ++i) {
+        glm::vec3 face = cube.faces[i];
         add_dlights(query.origin, dlights, &kCubeAxes[i], nullptr, face);
         store3(face / kNormalLevel, out.ambient_cube[i]);
     }
+    store_lights(strongest, out);
+    if (lights) *lights = strongest;
 }
 
 }  // namespace nq

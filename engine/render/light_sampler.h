@@ -21,12 +21,17 @@
 // COLOUR. The RGB (.lit) sample under the point divided by its largest channel (1, 1, 1 for
 // white light and for grey maps).
 //
-// AMBIENT CUBE. For each axis direction +X, -X, +Y, -Y, +Z, -Z: the lightmap RGB of the first
-// lit surface within kCubeRange along it (the light that surface receives stands for the light
-// it sends back); where the ray meets sky or nothing, the point's own RGB level. Dynamic lights
-// add (radius - distance) * max(0, dot(axis, toward the light)) in their colour (scaled to a
-// strongest channel of 1; they also tint `color`). Divided by 128 like the level.
-// Deterministic, and continuous except where a ray slides off an edge (LightSmoother).
+// AMBIENT CUBE. The map's baked ambient cube field at the point (ambient_cube_field.h: the
+// light the surroundings send toward it, sampled at level load, blended between nearby
+// samples), or, without a field or without a sample near the point, the point's own RGB level
+// on every face. Dynamic lights add (radius - distance) * max(0, dot(axis, toward the light))
+// in their colour (scaled to a strongest channel of 1; they also tint `color`). Divided by 128
+// like the level.
+//
+// LIGHTS (ABI 1.4). The strongest local lights at the point (entity_lights.h), as they are;
+// the engine fades them in and out per entity (light_list_smoother.h).
+// Deterministic; the cube is continuous except where a sample goes out of sight
+// (LightSmoother).
 #pragma once
 
 #include <cstdint>
@@ -37,13 +42,14 @@
 
 #include "formats/bsp.h"
 #include "nqr_renderer.h"
+#include "render/ambient_cube_field.h"
+#include "render/entity_lights.h"
 #include "render/light_direction.h"
 #include "render/light_entities.h"
 
 namespace nq {
 
 inline constexpr float kLightPointDepth = 2048.0f;
-inline constexpr float kCubeRange = 1024.0f;
 inline constexpr float kViewModelMinimumLight = 24.0f;
 inline constexpr float kPlayerMinimumLight = 8.0f;
 
@@ -55,27 +61,31 @@ struct EntityLightQuery {
 
 class LightSampler {
   public:
-    // Keeps references to `bsp` and `lighting_rgb` (3 bytes per lightmap sample, empty for an
-    // unlit map; BrushModelData::lighting_rgb()), which must outlive the sampler.
+    // Keeps references to `bsp`, `lighting_rgb` (3 bytes per lightmap sample, empty for an
+    // unlit map; BrushModelData::lighting_rgb()) and `field` (may be null), which must outlive
+    // the sampler.
     LightSampler(const Bsp& bsp, std::span<const uint8_t> lighting_rgb,
-                 std::vector<LightEntity> lights);
+                 std::vector<LightEntity> lights, const AmbientCubeField* field = nullptr);
 
     // Quake's R_LightPoint in RGB: light arriving at the ground under `point`.
     glm::vec3 light_point(const glm::vec3& point, std::span<const float> lightstyles) const;
 
-    // Fills `out` (size included). `lightstyles`: 64 values, 1 = normal. Allocation-free.
+    // Fills `out` (size included). `lightstyles`: 64 values, 1 = normal. `lights`, when given,
+    // receives the strongest lights with their identities (for LightListSmoother).
+    // Allocation-free.
     void sample(const EntityLightQuery& query, std::span<const float> lightstyles,
-                DlightList dlights, nqr_entity_light& out) const;
+                DlightList dlights, nqr_entity_light& out,
+                LightContributions* lights = nullptr) const;
 
     const std::vector<LightEntity>& lights() const { return lights_; }
 
   private:
-    glm::vec3 cube_face(const glm::vec3& point, const glm::vec3& axis, const glm::vec3& fallback,
-                        std::span<const float> lightstyles) const;
+    AmbientCube ambient_cube(const glm::vec3& point, const glm::vec3& fallback) const;
 
     const Bsp& bsp_;
     std::span<const uint8_t> rgb_;
     std::vector<LightEntity> lights_;
+    const AmbientCubeField* field_;
 };
 
 }  // namespace nq

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace nq {
 
@@ -51,7 +52,11 @@ void LightSmoother::update(const nqr_entity_light& sampled, float dt, nqr_entity
         for (int i = 0; i < 6; ++i) blend3(state_.ambient_cube[i], sampled.ambient_cube[i], t);
     }
     state_.size = sizeof(nqr_entity_light);
-    out = state_;
+    // The light list is LightListSmoother's: passed through as sampled.
+    nqr_entity_light result = state_;
+    result.num_lights = sampled.num_lights;
+    std::copy(std::begin(sampled.lights), std::end(sampled.lights), result.lights);
+    out = result;
 }
 
 }  // namespace nq

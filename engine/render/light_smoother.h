@@ -5,6 +5,8 @@
 //     t = 1 - exp(-dt / kLightSmoothingSeconds)
 //     direction = slerp(previous, sampled, t);  level = mix(previous, sampled, t)
 // In one update the direction turns by at most angle * t <= pi * dt / kLightSmoothingSeconds.
+// The light list (num_lights, lights) passes through as sampled: LightListSmoother
+// (light_list_smoother.h) fades it.
 // The engine keeps one smoother per entity (by entity number) and resets it when the entity
 // appears, changes model or teleports.
 #pragma once

@@ -23,10 +23,25 @@ inline bool frame_has_view_planes(const nqr_frame& frame) {
     return frame.size >= offsetof(nqr_frame, view_planes) + sizeof(frame.view_planes);
 }
 
+// An entity's light is read from its ABI 1.0 fields (up to the ambient cube); the light list
+// appended in 1.4 is checked on its own.
+inline bool light_readable(const nqr_entity_light& light) {
+    return light.size >= offsetof(nqr_entity_light, ambient_cube) + sizeof(light.ambient_cube);
+}
+inline bool light_has_sources(const nqr_entity_light& light) {
+    return light.size >= offsetof(nqr_entity_light, lights) + sizeof(light.lights);
+}
+
+// An entity is read from its ABI 1.0 prefix on (its light up to the ambient cube).
+inline bool entity_readable(const nqr_entity* entity) {
+    return entity != nullptr &&
+           entity->size >= offsetof(nqr_entity, light) + offsetof(nqr_entity_light, num_lights);
+}
+
 // An entity whose model can be on screen: readable, not flagged outside the view frustum nor
 // hidden behind the world.
 inline bool entity_in_view(const nqr_entity* entity) {
-    return has_known_prefix(entity) &&
+    return entity_readable(entity) &&
            (entity->flags & (NQR_ENTITY_OUTSIDE_VIEW | NQR_ENTITY_OCCLUDED)) == 0;
 }
 

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "classic/abi_access.h"
 #include "classic/alias_pose_glsl.h"
 #include "gl/texture_upload.h"
 #include "technical/shading_glsl.h"
@@ -107,7 +108,7 @@ void AliasFaceDrawer::reset() {
 void AliasFaceDrawer::set_light_direction(const nqr_entity& entity) {
     // An engine too old to sample light, or no dominant light: light from straight above.
     glm::vec3 direction(0.0f, 0.0f, 1.0f);
-    if (entity.light.size >= sizeof(nqr_entity_light)) {
+    if (classic::light_readable(entity.light)) {
         const glm::vec3 sampled = glm::make_vec3(entity.light.direction);
         const float length = glm::length(sampled);
         if (length > 1e-6f) direction = sampled / length;

@@ -141,7 +141,7 @@ void TechnicalRenderer::draw_brush_entity_edges(const nqr_frame& frame,
 // ------------------------------------------------------------------ alias models
 
 bool TechnicalRenderer::find_alias(const nqr_entity* entity, AliasItem& out) const {
-    if (!has_known_prefix(entity)) return false;
+    if (!classic::entity_readable(entity)) return false;
     const classic::RegisteredModel* registered = classic_.models().find(entity->model);
     if (!registered || !registered->alias) return false;
     out.entity = entity;
