@@ -3,11 +3,11 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <cstddef>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "classic/abi_access.h"
 #include "illustrative/skin_masks.h"
 
 namespace nq::npr::illustrative {
@@ -83,10 +83,6 @@ glm::vec3 vec3_of(const float* v) {
     return glm::vec3(v[0], v[1], v[2]);
 }
 
-bool has_light_list(const nqr_entity_light& light) {
-    return light.size >= offsetof(nqr_entity_light, lights) + sizeof(light.lights);
-}
-
 }  // namespace
 
 ShaderLights shader_lights(const nqr_entity& entity, int max_lights) {
@@ -94,11 +90,13 @@ ShaderLights shader_lights(const nqr_entity& entity, int max_lights) {
     const int limit = std::clamp(max_lights, 0, int(NQR_MAX_ENTITY_LIGHTS));
     if ((entity.flags & NQR_ENTITY_FULLBRIGHT) != 0) return out;
     const nqr_entity_light& light = entity.light;
-    if (has_light_list(light) && light.num_lights > 0) {
+    if (classic::light_has_sources(light) && light.num_lights > 0 &&
+        light.lights[0].size >= sizeof(nqr_light_source)) {
         const int listed = std::min<int>(static_cast<int>(light.num_lights), limit);
         for (int i = 0; i < listed; ++i) {
-            out.position[i] = vec3_of(light.lights[i].position);
-            out.color[i] = glm::max(vec3_of(light.lights[i].color), glm::vec3(0.0f));
+            const nqr_light_source& source = classic::abi_element(light.lights, uint32_t(i));
+            out.position[i] = vec3_of(source.position);
+            out.color[i] = glm::max(vec3_of(source.color), glm::vec3(0.0f));
         }
         out.count = listed;
         return out;

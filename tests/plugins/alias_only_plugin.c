@@ -40,6 +40,8 @@ static const nqr_renderer g_table = {
     draw_nothing, /* draw_particles */
     0,            /* post_process */
     0,            /* end_frame */
+    0,            /* menu_settings */
+    0,            /* num_menu_settings */
 };
 
 NQR_EXPORT const nqr_renderer* nqr_get_renderer(uint32_t engine_abi_version,

@@ -66,6 +66,7 @@ static nqr_renderer g_table = {
     sizeof(nqr_renderer), NQR_ABI_VERSION, "probe", "test plugin", 0,
     probe_init, probe_shutdown, probe_register, probe_release,
     probe_frame, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, /* menu_settings, num_menu_settings */
 };
 
 /* KIND_NOENTRY exports its table under a misspelled name, so the engine finds no entry point. */
