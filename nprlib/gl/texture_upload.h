@@ -28,6 +28,7 @@ inline constexpr Sampling kMipmappedClamp = {GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR,
                                              true};
 inline constexpr Sampling kLinearClamp = {GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, false};
 inline constexpr Sampling kNearestClamp = {GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, false};
+inline constexpr Sampling kNearestRepeat = {GL_NEAREST, GL_NEAREST, GL_REPEAT, false};
 
 // A 2D RGBA8 texture from width x height RGBA bytes (rows bottom-to-top as GL sees them: row 0
 // of `rgba` is t = 0). Mipmaps are generated when sampling asks for them.

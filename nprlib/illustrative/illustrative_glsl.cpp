@@ -32,7 +32,14 @@ vec3 ill_ambient_cube(vec3 n) {
            n2.y * (n.y >= 0.0 ? u_cube[2] : u_cube[3]) +
            n2.z * (n.z >= 0.0 ? u_cube[4] : u_cube[5]);
 }
-vec3 ill_warp(float x) { return 2.0 * texture(u_warp, vec2(clamp(x, 0.0, 1.0), 0.5)).rgb; }
+// Linear filtering by hand: two fetches are cheaper than a sampler's bilinear on software GL.
+vec3 ill_warp(float x) {
+    float texel = clamp(x * 256.0 - 0.5, 0.0, 255.0);
+    int i0 = int(texel);
+    vec3 w0 = texelFetch(u_warp, ivec2(i0, 0), 0).rgb;
+    vec3 w1 = texelFetch(u_warp, ivec2(min(i0 + 1, 255), 0), 0).rgb;
+    return 2.0 * mix(w0, w1, texel - float(i0));
+}
 float ill_half_lambert(float n_dot_l) {
     return pow(clamp(u_half_lambert.x * n_dot_l + u_half_lambert.y, 0.0, 1.0), u_half_lambert.z);
 }
@@ -52,13 +59,16 @@ vec3 ill_shade(vec3 kd, vec3 position, vec3 n, vec3 v, vec4 masks) {
     float k_r = u_mask_use.y > 0.5 ? masks.b : 1.0;
     vec3 ambient = u_terms.w * ill_ambient_cube(n);
     vec3 warped = vec3(0.0), specular = vec3(0.0), rim = vec3(0.0);
+    float spec_scale = u_terms.x * f_s * u_phong.y;
+    float rim_scale = u_terms.y * f_r * k_r * u_phong.w;
     for (int i = 0; i < u_num_lights; ++i) {
         vec3 l = normalize(u_light_position[i] - position);
         float n_dot_l = dot(n, l);
         warped += u_light_color[i] * ill_warp(ill_half_lambert(n_dot_l));
         float v_dot_r = max(dot(v, reflect(-l, n)), 0.0);
-        float spec = u_terms.x * f_s * u_phong.y * pow(v_dot_r, k_spec);
-        float rim_i = u_terms.y * f_r * k_r * u_phong.w * pow(v_dot_r, u_phong.z);
+        float log_v_dot_r = log2(max(v_dot_r, 1e-8));  // one log for both powers
+        float spec = spec_scale * exp2(k_spec * log_v_dot_r);
+        float rim_i = rim_scale * exp2(u_phong.z * log_v_dot_r);
         // The paper's max(): the larger term wins per light; each is kept apart for ill_show.
         if (spec >= rim_i) specular += u_light_color[i] * k_s * spec;
         else rim += u_light_color[i] * k_s * rim_i;

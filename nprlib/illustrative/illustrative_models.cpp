@@ -107,7 +107,7 @@ void IllustrativeModels::add(const nqr_model& model, const ModelLoadOptions& opt
                 skin_mask_texels({skin.images[i], pixels}, alias.skin_width, alias.skin_height,
                                  palette_masks);
             data.masks[s].push_back(gl::create_rgba8_texture(
-                tracker_, alias.skin_width, alias.skin_height, rgba, gl::kMipmappedRepeat));
+                tracker_, alias.skin_width, alias.skin_height, rgba, gl::kNearestRepeat));
         }
     }
     if (model.name) load_material(model.name, data);
