@@ -1,14 +1,11 @@
 #include "host/bind_commands.h"
 
 #include "host/key_names.h"
+#include "host/quoted.h"
 #include "host/text_util.h"
 
 namespace nq {
 namespace {
-
-std::string quoted(std::string_view text) {
-    return "\"" + std::string(text) + "\"";
-}
 
 void invalid_key(CommandSystem& commands, const std::string& key) {
     commands.print(quoted(key) + " isn't a valid key\n");

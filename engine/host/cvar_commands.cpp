@@ -3,14 +3,11 @@
 #include <algorithm>
 
 #include "host/number_text.h"
+#include "host/quoted.h"
 #include "host/text_util.h"
 
 namespace nq {
 namespace {
-
-std::string quoted(std::string_view text) {
-    return "\"" + std::string(text) + "\"";
-}
 
 void set_command(CommandSystem& commands, const CommandArgs& args, uint32_t extra_flags) {
     if (args.argc() < 3) {

@@ -1,13 +1,10 @@
 #include "host/script_commands.h"
 
+#include "host/quoted.h"
 #include "host/text_util.h"
 
 namespace nq {
 namespace {
-
-std::string quoted(std::string_view text) {
-    return "\"" + std::string(text) + "\"";
-}
 
 void echo_command(CommandSystem& commands, const CommandArgs& args) {
     std::string text;
