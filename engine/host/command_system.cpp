@@ -2,6 +2,7 @@
 
 #include "host/alias_expansion.h"
 #include "host/cvar_commands.h"
+#include "host/quoted.h"
 #include "host/text_util.h"
 
 namespace nq {
@@ -50,7 +51,7 @@ std::vector<CommandInfo> CommandSystem::list_commands(std::string_view prefix) c
 }
 
 bool CommandSystem::set_alias(std::string_view name, std::string body) {
-    std::string quoted = "\"" + std::string(name) + "\"";
+    const std::string quoted = nq::quoted(name);
     if (!is_valid_name(name)) {
         print("alias: invalid name " + quoted + "\n");
         return false;
