@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "classic/alias_pass_state.h"
 #include "classic/alias_pose_glsl.h"
 #include "gl/texture_upload.h"
 
@@ -142,10 +143,7 @@ bool AliasShadingDrawer::begin(const classic::FrameView& view,
     glUniform3fv(program_.location("u_eye"), 1, glm::value_ptr(view.eye));
     set_illustrative_uniforms(program_, settings);
     glUniform1f(program_.location("u_height_floor"), settings.height_gradient_floor);
-    // Quake winds alias triangles clockwise seen from outside: cull the inside, as classic.
-    glEnable(GL_CULL_FACE);
-    glFrontFace(GL_CW);
-    glCullFace(GL_BACK);
+    classic::begin_alias_face_culling();
     return true;
 }
 
@@ -183,27 +181,11 @@ void AliasShadingDrawer::draw(const classic::FrameView& view, const nqr_entity& 
     bind(kUnitMasks, GL_TEXTURE_2D, masks ? textures.masks : neutral_masks_.id());
     bind(kUnitWarp, GL_TEXTURE_2D, textures.warp ? textures.warp : default_warp_);
     glBindVertexArray(model.vertex_array());
-    const bool translucent = alpha < 1.0f;
-    if (translucent) {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(GL_FALSE);
-    }
-    glDrawElements(GL_TRIANGLES, model.index_count(), GL_UNSIGNED_INT, nullptr);
-    if (translucent) {
-        glDisable(GL_BLEND);
-        glDepthMask(GL_TRUE);
-    }
+    classic::draw_alias_elements(model.index_count(), alpha < 1.0f);
 }
 
 void AliasShadingDrawer::end() {
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glFrontFace(GL_CCW);
-    glDisable(GL_CULL_FACE);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glActiveTexture(GL_TEXTURE0);
+    classic::end_alias_face_pass();
     settings_ = nullptr;
 }
 

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "classic/abi_access.h"
+#include "classic/alias_pass_state.h"
 #include "classic/alias_pose_glsl.h"
 #include "gl/texture_upload.h"
 #include "technical/shading_glsl.h"
@@ -125,10 +126,7 @@ bool AliasFaceDrawer::begin(const classic::FrameView& view, const ShadingSetting
                        glm::value_ptr(view.view_projection));
     set_shading_uniforms(*program_, settings);
     add_fullbright_ = settings.mode != ShadingMode::object_id;
-    // Quake winds alias triangles clockwise seen from outside: cull the inside, as classic.
-    glEnable(GL_CULL_FACE);
-    glFrontFace(GL_CW);
-    glCullFace(GL_BACK);
+    classic::begin_alias_face_culling();
     return true;
 }
 
@@ -158,27 +156,11 @@ void AliasFaceDrawer::draw(const classic::FrameView& view, const nqr_entity& ent
     const bool add_fullbright = fullbright_texture != 0 && add_fullbright_;
     glBindTexture(GL_TEXTURE_2D, add_fullbright ? fullbright_texture : black_.id());
     glBindVertexArray(model.vertex_array());
-    const bool translucent = alpha < 1.0f;
-    if (translucent) {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(GL_FALSE);
-    }
-    glDrawElements(GL_TRIANGLES, model.index_count(), GL_UNSIGNED_INT, nullptr);
-    if (translucent) {
-        glDisable(GL_BLEND);
-        glDepthMask(GL_TRUE);
-    }
+    classic::draw_alias_elements(model.index_count(), alpha < 1.0f);
 }
 
 void AliasFaceDrawer::end() {
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glFrontFace(GL_CCW);
-    glDisable(GL_CULL_FACE);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glActiveTexture(GL_TEXTURE0);
+    classic::end_alias_face_pass();
 }
 
 void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_entity& entity,
