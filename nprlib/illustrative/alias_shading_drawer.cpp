@@ -24,11 +24,18 @@ uniform mat4 u_model;
 uniform mat4 u_view_projection;
 uniform mat3 u_normal_to_world;
 uniform mat3 u_normal_to_view;
+uniform vec3 u_eye;
 out vec2 v_uv;
 out vec3 v_world_position;
 out vec3 v_world_normal;
 out vec3 v_view_normal;
+out vec3 v_cube_n;
+out vec3 v_cube_back;
 out float v_height;
+vec3 unit_or_up(vec3 v) {
+    float len2 = dot(v, v);
+    return len2 > 1e-12 ? v * inversesqrt(len2) : vec3(0.0, 0.0, 1.0);
+}
 vec3 slot_normal(int pose) {
     return texelFetch(u_normals, pose * u_normal_slots + int(a_normal_slot)).xyz * 2.0 - 1.0;
 }
@@ -41,6 +48,8 @@ void main() {
     v_world_position = world.xyz;
     v_world_normal = u_normal_to_world * normal;
     v_view_normal = u_normal_to_view * normal;
+    v_cube_n = ill_ambient_cube(unit_or_up(v_world_normal));
+    v_cube_back = ill_ambient_cube(-unit_or_up(u_eye - world.xyz));
     v_height = position.z;
 }
 )";
@@ -50,6 +59,8 @@ in vec2 v_uv;
 in vec3 v_world_position;
 in vec3 v_world_normal;
 in vec3 v_view_normal;
+in vec3 v_cube_n;
+in vec3 v_cube_back;
 in float v_height;
 uniform sampler2D u_skin;
 uniform sampler2D u_fullbright;
@@ -63,8 +74,8 @@ uniform float u_height_floor;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_normal;
 vec3 unit_or_up(vec3 v) {
-    float len = length(v);
-    return len > 1e-6 ? v / len : vec3(0.0, 0.0, 1.0);
+    float len2 = dot(v, v);
+    return len2 > 1e-12 ? v * inversesqrt(len2) : vec3(0.0, 0.0, 1.0);
 }
 vec3 saturate_by(vec3 c, float amount) {
     float luma = dot(c, vec3(0.299, 0.587, 0.114));
@@ -72,7 +83,9 @@ vec3 saturate_by(vec3 c, float amount) {
 }
 void main() {
     vec4 texel = texture(u_skin, v_uv);
+#ifdef ILL_CUTOUT
     if (texel.a < u_alpha_cutoff) discard;  // cutoff 0: never
+#endif
     vec4 masks = texture(u_masks, v_uv);
     vec3 kd = saturate_by(texel.rgb, mix(1.0, u_team_saturation, masks.a));
     if (u_height_gradient.x > 0.5) {
@@ -81,8 +94,8 @@ void main() {
     }
     vec3 n = unit_or_up(v_world_normal);
     vec3 v = unit_or_up(u_eye - v_world_position);
-    vec3 shaded = ill_shade(kd, v_world_position, n, v, masks);
-    vec3 glow = u_show == 0 ? texture(u_fullbright, v_uv).rgb : vec3(0.0);
+    vec3 shaded = ill_shade(kd, v_world_position, n, v, masks, v_cube_n, v_cube_back);
+    vec3 glow = ill_final_colour() ? texture(u_fullbright, v_uv).rgb : vec3(0.0);
     o_color = vec4(shaded + glow, u_alpha);
     o_normal = vec4(unit_or_up(v_view_normal) * 0.5 + 0.5, 1.0);
 }
@@ -109,42 +122,81 @@ bool AliasShadingDrawer::init(gl::ObjectTracker* tracker, std::string& error) {
     black_ = gl::create_solid_texture(tracker, 0, 0, 0, 0);
     // k_s = 1, mid exponent, k_r = 1, no team colour: what ill_skin_masks 0 draws.
     neutral_masks_ = gl::create_solid_texture(tracker, 255, 128, 255, 0);
+    // The general form is every other's fallback; the default settings' forms are built now so
+    // that no frame waits for a compile. Others (gamma != 1) are built when first drawn.
+    if (!build_variant(ShadingVariant{}, error)) return false;
+    for (int lights = 0; lights <= int(NQR_MAX_ENTITY_LIGHTS); ++lights) {
+        if (!build_variant({false, lights, false}, error)) return false;
+    }
+    return true;
+}
+
+bool AliasShadingDrawer::build_variant(const ShadingVariant& variant, std::string& error) {
+    VariantProgram& slot = variants_[variant_index(variant)];
     const std::string vertex =
-        std::string(kHeader) + classic::kAliasPoseLibrary + kVertexBody;
-    const std::string fragment = std::string(kHeader) + kIllustrativeLibrary + kFragmentBody;
-    gl::ProgramBuild build =
-        gl::Program::build({"illustrative alias models", vertex.c_str(), fragment.c_str()},
-                           tracker_);
+        std::string(kHeader) + classic::kAliasPoseLibrary + kAmbientCubeLibrary + kVertexBody;
+    const std::string fragment =
+        std::string(kHeader) + shading_defines(variant) + kIllustrativeLibrary + kFragmentBody;
+    gl::ProgramBuild build = gl::Program::build(
+        {"illustrative alias models", vertex.c_str(), fragment.c_str()}, tracker_);
     if (!build.ok()) {
+        slot.build_failed = true;
         error = build.error;
         return false;
     }
-    program_ = std::move(build.program);
-    gl::bind_sampler_units(program_,
+    slot.program = std::move(build.program);
+    gl::bind_sampler_units(slot.program,
                            {"u_skin", "u_fullbright", "u_poses", "u_normals", "u_masks", "u_warp"});
     return true;
 }
 
 void AliasShadingDrawer::reset() {
-    program_.reset();
+    for (VariantProgram& slot : variants_) slot = VariantProgram{};
+    current_ = nullptr;
     black_.reset();
     neutral_masks_.reset();
+    view_ = nullptr;
     settings_ = nullptr;
 }
 
-bool AliasShadingDrawer::begin(const classic::FrameView& view,
-                               const IllustrativeSettings& settings, GLuint default_warp) {
-    if (!program_) return false;
+bool AliasShadingDrawer::begin(const classic::FrameView& view, const IllustrativeSettings& settings,
+                               GLuint default_warp) {
+    if (!variants_[kShadingVariants - 1].program) return false;
+    view_ = &view;
     settings_ = &settings;
     default_warp_ = default_warp;
-    program_.use();
-    glUniformMatrix4fv(program_.location("u_view_projection"), 1, GL_FALSE,
-                       glm::value_ptr(view.view_projection));
-    glUniform3fv(program_.location("u_eye"), 1, glm::value_ptr(view.eye));
-    set_illustrative_uniforms(program_, settings);
-    glUniform1f(program_.location("u_height_floor"), settings.height_gradient_floor);
+    ++pass_;
+    current_ = nullptr;
     classic::begin_alias_face_culling();
     return true;
+}
+
+// The variant's program in use with this pass's uniforms; the general one when it cannot build.
+gl::Program& AliasShadingDrawer::use_variant(const ShadingVariant& variant) {
+    VariantProgram* slot = &variants_[variant_index(variant)];
+    if (!slot->program && !slot->build_failed) {
+        std::string ignored;  // the general form draws the same picture
+        build_variant(variant, ignored);
+        current_ = nullptr;  // building may have changed the program in use
+    }
+    if (!slot->program) slot = &variants_[kShadingVariants - 1];
+    if (current_ != &slot->program) {
+        slot->program.use();
+        current_ = &slot->program;
+    }
+    if (slot->pass_uniforms_set != pass_) {
+        set_pass_uniforms(slot->program);
+        slot->pass_uniforms_set = pass_;
+    }
+    return slot->program;
+}
+
+void AliasShadingDrawer::set_pass_uniforms(gl::Program& program) {
+    glUniformMatrix4fv(program.location("u_view_projection"), 1, GL_FALSE,
+                       glm::value_ptr(view_->view_projection));
+    glUniform3fv(program.location("u_eye"), 1, glm::value_ptr(view_->eye));
+    set_illustrative_uniforms(program, *settings_);
+    glUniform1f(program.location("u_height_floor"), settings_->height_gradient_floor);
 }
 
 void AliasShadingDrawer::draw(const classic::FrameView& view, const nqr_entity& entity,
@@ -152,26 +204,28 @@ void AliasShadingDrawer::draw(const classic::FrameView& view, const nqr_entity& 
                               const AliasShadingTextures& textures,
                               const MaterialParams& material) {
     if (!settings_ || textures.skin == 0) return;
+    const EntityShading shading = entity_shading(entity, *settings_);
+    gl::Program& program =
+        use_variant(shading_variant(*settings_, shading.lights.count, gpu.holey()));
     const glm::mat4 model_matrix = classic::mat4_from(entity.model_matrix);
-    glUniformMatrix4fv(program_.location("u_model"), 1, GL_FALSE, entity.model_matrix);
+    glUniformMatrix4fv(program.location("u_model"), 1, GL_FALSE, entity.model_matrix);
     const glm::mat3 to_world = glm::inverseTranspose(glm::mat3(model_matrix));
-    glUniformMatrix3fv(program_.location("u_normal_to_world"), 1, GL_FALSE,
+    glUniformMatrix3fv(program.location("u_normal_to_world"), 1, GL_FALSE,
                        glm::value_ptr(to_world));
     const glm::mat3 to_view = classic::normal_to_view(view, model_matrix);
-    glUniformMatrix3fv(program_.location("u_normal_to_view"), 1, GL_FALSE,
-                       glm::value_ptr(to_view));
-    classic::set_alias_pose_uniforms(program_, gpu, entity, kUnitPoses);
-    glUniform1i(program_.location("u_normal_slots"), static_cast<GLint>(model.normal_slots()));
-    set_entity_lighting(program_, entity, material, *settings_);
+    glUniformMatrix3fv(program.location("u_normal_to_view"), 1, GL_FALSE, glm::value_ptr(to_view));
+    classic::set_alias_pose_uniforms(program, gpu, entity, kUnitPoses);
+    glUniform1i(program.location("u_normal_slots"), static_cast<GLint>(model.normal_slots()));
+    set_entity_lighting(program, shading, material, *settings_);
     // Shirt and pants stay saturated on player-coloured models only (the team read).
-    glUniform1f(program_.location("u_team_saturation"),
+    glUniform1f(program.location("u_team_saturation"),
                 entity.has_translation ? settings_->team_saturation : 1.0f);
     const float height_span = model.height_max() - model.height_min();
-    glUniform3f(program_.location("u_height_gradient"), settings_->height_gradient ? 1.0f : 0.0f,
+    glUniform3f(program.location("u_height_gradient"), settings_->height_gradient ? 1.0f : 0.0f,
                 model.height_min(), height_span > 0.0f ? 1.0f / height_span : 0.0f);
     const float alpha = classic::entity_alpha(entity.alpha);
-    glUniform1f(program_.location("u_alpha"), alpha);
-    glUniform1f(program_.location("u_alpha_cutoff"), gpu.holey() ? kHoleyAlphaCutoff : 0.0f);
+    glUniform1f(program.location("u_alpha"), alpha);
+    glUniform1f(program.location("u_alpha_cutoff"), gpu.holey() ? kHoleyAlphaCutoff : 0.0f);
 
     bind(kUnitSkin, GL_TEXTURE_2D, textures.skin);
     const bool glow = textures.fullbright != 0 && material.self_illum;
@@ -186,6 +240,8 @@ void AliasShadingDrawer::draw(const classic::FrameView& view, const nqr_entity& 
 
 void AliasShadingDrawer::end() {
     classic::end_alias_face_pass();
+    current_ = nullptr;
+    view_ = nullptr;
     settings_ = nullptr;
 }
 

@@ -6,6 +6,7 @@
 // alpha < 1 blended without depth writes, view-space normals written to location 1.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "classic/alias_model_gpu.h"
@@ -43,10 +44,23 @@ class AliasShadingDrawer {
     void end();
 
   private:
+    // One compiled form of the shading (illustrative_glsl.h's ShadingVariant).
+    struct VariantProgram {
+        gl::Program program;
+        bool build_failed = false;
+        unsigned pass_uniforms_set = 0;  // the pass whose uniforms it holds
+    };
+    bool build_variant(const ShadingVariant& variant, std::string& error);
+    gl::Program& use_variant(const ShadingVariant& variant);
+    void set_pass_uniforms(gl::Program& program);
+
     gl::ObjectTracker* tracker_ = nullptr;
-    gl::Program program_;
+    std::array<VariantProgram, kShadingVariants> variants_;
+    gl::Program* current_ = nullptr;
     gl::Texture black_, neutral_masks_;
+    const classic::FrameView* view_ = nullptr;        // this pass's
     const IllustrativeSettings* settings_ = nullptr;  // this pass's
+    unsigned pass_ = 0;
     GLuint default_warp_ = 0;
 };
 

@@ -31,13 +31,13 @@ const CvarBinding kBindings[] = {
      [](const nqr_cvar& c, S& s) { s.ambient_scale = clamped(c, 0, 8); }},
     {"ill_lights", "1", "scale of the local lights c_i",
      [](const nqr_cvar& c, S& s) { s.light_scale = clamped(c, 0, 8); }},
-    {"ill_max_lights", "4", "local lights per model (0..4, strongest first)",
+    {"ill_max_lights", "2",
+     "local lights shaded per pixel (0..4, strongest first; the others join the ambient cube)",
      [](const nqr_cvar& c, S& s) { s.max_lights = choice(c, 4); }},
     // ---- view-dependent terms (a model's .mat file overrides the material ones)
     {"ill_specular", "1", "Phong specular term (0/1)",
      [](const nqr_cvar& c, S& s) { s.specular = flag(c); }},
-    {"ill_rim", "1", "per-light rim term (0/1)",
-     [](const nqr_cvar& c, S& s) { s.rim = flag(c); }},
+    {"ill_rim", "1", "per-light rim term (0/1)", [](const nqr_cvar& c, S& s) { s.rim = flag(c); }},
     {"ill_dedicated_rim", "1", "dedicated rim from the ambient cube on upward faces (0/1)",
      [](const nqr_cvar& c, S& s) { s.dedicated_rim = flag(c); }},
     {"ill_phong_exponent", "20",
@@ -90,7 +90,7 @@ const CvarBinding kBindings[] = {
 
 static_assert(std::size(kBindings) <= 64, "raise CvarSet's MaxCvars");
 
-const char* const kShowChoices[] = {"final",    "albedo",   "ambient", "warped",
+const char* const kShowChoices[] = {"final",   "albedo",   "ambient", "warped",
                                     "diffuse", "specular", "rim",     "view-dep"};
 
 const nqr_menu_setting kMenuSettings[] = {

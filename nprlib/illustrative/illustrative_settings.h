@@ -14,13 +14,13 @@ namespace nq::npr::illustrative {
 // the paper's figure 6.
 enum class ShowTerm {
     final = 0,
-    albedo = 1,           // k_d (team saturation applied)
-    ambient = 2,          // a(n)
-    warped_diffuse = 3,   // sum_i c_i w(...)
-    diffuse_total = 4,    // k_d [a(n) + sum ...]
-    specular = 5,         // the per-light max() with the rim half off
-    rim = 6,              // the per-light rim half + the dedicated rim
-    view_dependent = 7,   // everything equation 2 adds
+    albedo = 1,          // k_d (team saturation applied)
+    ambient = 2,         // a(n)
+    warped_diffuse = 3,  // sum_i c_i w(...)
+    diffuse_total = 4,   // k_d [a(n) + sum ...]
+    specular = 5,        // the per-light max() with the rim half off
+    rim = 6,             // the per-light rim half + the dedicated rim
+    view_dependent = 7,  // everything equation 2 adds
 };
 inline constexpr int kShowTerms = 8;
 
@@ -29,11 +29,11 @@ struct MaterialParams {
     float phong_exponent = 20.0f;  // k_spec where the skin masks do not give one
     float phong_boost = 0.3f;
     float fresnel_ranges[3] = {0.3f, 1.0f, 8.0f};  // f_s at n.v = 1, at the middle, at grazing
-    float rim_exponent = 4.0f;                      // k_rim: broad, constant per object
+    float rim_exponent = 4.0f;                     // k_rim: broad, constant per object
     float rim_boost = 2.0f;
     float ambient_scale = 1.0f;
     bool rim_light = true;
-    bool rim_mask = true;         // k_r from the skin masks (else 1)
+    bool rim_mask = true;            // k_r from the skin masks (else 1)
     bool exponent_from_skin = true;  // k_spec per texel from the skin masks (else phong_exponent)
     bool self_illum = true;          // fullbright skin texels glow
 };
@@ -46,7 +46,8 @@ struct IllustrativeSettings {
     std::string warp_ramp = "tf2";  // built-in name or a path to a PNG / .lmp ramp image
     float ambient_scale = 1.0f;     // a(n), the ambient cube
     float light_scale = 1.0f;       // c_i, the entity's local lights
-    int max_lights = 4;             // 0..4: the strongest lights the engine lists
+    int max_lights = 2;             // 0..4: lights per pixel, strongest first; the rest of the
+                                    // engine's list joins the ambient cube
     // View-dependent terms.
     bool specular = true;
     bool rim = true;            // the rim half of the per-light max()
@@ -60,8 +61,8 @@ struct IllustrativeSettings {
     bool height_gradient = false;        // the paper's dark-feet-to-light-chest gradient
     float height_gradient_floor = 0.6f;  // brightness at the model's lowest point
     // World (at map load).
-    bool abstract_world = true;   // edge-preserving smoothing of the world textures
-    int abstract_radius = 2;      // Kuwahara radius in texels
+    bool abstract_world = true;  // edge-preserving smoothing of the world textures
+    int abstract_radius = 2;     // Kuwahara radius in texels
     float world_saturation = 1.2f;
     float world_contrast = 1.15f;
     ShowTerm show = ShowTerm::final;  // ill_show: the final colour or one term alone

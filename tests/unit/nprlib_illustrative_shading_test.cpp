@@ -95,8 +95,10 @@ class IllustrativeShadingTest : public GlSuiteTest<IllustrativeShadingTest> {
         if (HasFatalFailure()) return;
         std::string error;
         ASSERT_TRUE(drawer_.init(&tracker_, error)) << error;
-        ramp_a_ = gl::create_rgba8_texture(&tracker_, 256, 1, ramp_texels(ramp_a), gl::kLinearClamp);
-        ramp_b_ = gl::create_rgba8_texture(&tracker_, 256, 1, ramp_texels(ramp_b), gl::kLinearClamp);
+        ramp_a_ =
+            gl::create_rgba8_texture(&tracker_, 256, 1, ramp_texels(ramp_a), gl::kLinearClamp);
+        ramp_b_ =
+            gl::create_rgba8_texture(&tracker_, 256, 1, ramp_texels(ramp_b), gl::kLinearClamp);
         entity_ = make_entity(1);
         set_cube(glm::vec3(0.0f));
     }
@@ -188,9 +190,9 @@ class IllustrativeShadingTest : public GlSuiteTest<IllustrativeShadingTest> {
 
 constexpr int kTolerance = 4;
 
-#define EXPECT_COLOUR(actual, expected, tolerance)                                    \
+#define EXPECT_COLOUR(actual, expected, tolerance)                                       \
     EXPECT_TRUE(near((actual), (expected), (tolerance))) << "drawn " << (actual) << ", " \
-                                                          << "expected " << (expected)
+                                                         << "expected " << (expected)
 
 // ------------------------------------------------------------------ view-independent terms
 
@@ -245,6 +247,85 @@ TEST_F(IllustrativeShadingTest, AmbientCubeWeighsEachFaceBySquaredNormal) {
     });
     EXPECT_GT(checked, 150);
     EXPECT_LE(wrong, checked / 50) << wrong << " of " << checked;
+}
+
+// Lights past ill_max_lights are not dropped: each joins the ambient cube as
+// c max(0, axis . l) on every face, so a(n) grows by about c max(0, n . l).
+TEST_F(IllustrativeShadingTest, LightsPastThePerPixelBudgetJoinTheAmbientCube) {
+    upload_sphere(kGrey);
+    set_cube(glm::vec3(0.1f));
+    const glm::vec3 kept(-1.0f, 0.0f, 0.0f), folded = glm::normalize(glm::vec3(-1.0f, 1.0f, 1.0f));
+    const glm::vec3 colours[2] = {glm::vec3(0.5f), glm::vec3(0.4f, 0.3f, 0.2f)};
+    entity_.light.num_lights = 2;
+    for (int i = 0; i < 2; ++i) {
+        nqr_light_source& light = entity_.light.lights[i];
+        light.size = sizeof(nqr_light_source);
+        const glm::vec3 position = glm::normalize(i == 0 ? kept : folded) * 1.0e5f;
+        std::copy_n(&position.x, 3, light.position);
+        std::copy_n(&colours[i].x, 3, light.color);
+    }
+    IllustrativeSettings s = terms(false, false, false);
+    s.max_lights = 1;
+    glm::vec3 expected_cube[6];
+    for (int axis = 0; axis < 3; ++axis) {
+        expected_cube[2 * axis] = cube_[2 * axis] + colours[1] * std::max(folded[axis], 0.0f);
+        expected_cube[2 * axis + 1] =
+            cube_[2 * axis + 1] + colours[1] * std::max(-folded[axis], 0.0f);
+    }
+    const std::vector<Rgb> ambient = draw(s, ShowTerm::ambient, ramp_a_.id());
+    int checked = 0, wrong = 0;
+    for_inner_pixels(3, 0.5f, [&](int x, int y, glm::vec3 n, glm::vec3) {
+        ++checked;
+        wrong += !near(ambient[y * kSize + x], to_rgb(cube_at(expected_cube, n)), 8);
+    });
+    EXPECT_GT(checked, 150);
+    EXPECT_LE(wrong, checked / 50) << wrong << " of " << checked;
+    // The kept light is still per pixel, warped: the diffuse light term is its ramp alone.
+    const glm::vec2 pole = project(make_camera(kEye, {}), {-kSphereRadius, 0.0f, 0.0f});
+    const Rgb warped =
+        draw(s, ShowTerm::warped_diffuse, ramp_a_.id())[int(pole.y) * kSize + int(pole.x)];
+    EXPECT_COLOUR(warped, to_rgb(colours[0] * 2.0f * sample_ramp(ramp_a, 1.0f)), kTolerance);
+    // With the budget at 2 both are per pixel and the cube is the map's alone.
+    s.max_lights = 2;
+    EXPECT_COLOUR(draw(s, ShowTerm::ambient, ramp_a_.id())[int(pole.y) * kSize + int(pole.x)],
+                  to_rgb(glm::vec3(0.1f)), kTolerance);
+}
+
+// The final colour is drawn by programs compiled for it (a fixed light count, no ill_show);
+// it must be what the general program's terms add up to.
+TEST_F(IllustrativeShadingTest, TheFinalColourIsTheSumOfTheTermsShownAlone) {
+    upload_sphere(kGrey);
+    set_cube(glm::vec3(0.15f, 0.2f, 0.25f));
+    for (int lights = 0; lights <= 4; ++lights) {
+        entity_.light.num_lights = lights;
+        for (int i = 0; i < lights; ++i) {
+            nqr_light_source& light = entity_.light.lights[i];
+            light.size = sizeof(nqr_light_source);
+            const glm::vec3 position = glm::normalize(glm::vec3(-1.0f, i - 1.5f, 0.7f)) * 1.0e5f;
+            std::copy_n(&position.x, 3, light.position);
+            const glm::vec3 colour(0.3f, 0.25f, 0.2f);
+            std::copy_n(&colour.x, 3, light.color);
+        }
+        IllustrativeSettings s = terms(true, true, true);
+        s.max_lights = 4;
+        for (float gamma : {1.0f, 2.0f}) {
+            s.half_lambert_gamma = gamma;
+            const std::vector<Rgb> final_colour = draw(s, ShowTerm::final, ramp_a_.id());
+            const std::vector<Rgb> diffuse = draw(s, ShowTerm::diffuse_total, ramp_a_.id());
+            const std::vector<Rgb> view = draw(s, ShowTerm::view_dependent, ramp_a_.id());
+            int checked = 0, wrong = 0;
+            for_inner_pixels(2, 0.2f, [&](int x, int y, glm::vec3, glm::vec3) {
+                const size_t i = size_t(y) * kSize + size_t(x);
+                const Rgb sum{std::min(255, diffuse[i].r + view[i].r),
+                              std::min(255, diffuse[i].g + view[i].g),
+                              std::min(255, diffuse[i].b + view[i].b)};
+                ++checked;
+                wrong += !near(final_colour[i], sum, 2);
+            });
+            EXPECT_GT(checked, 300);
+            EXPECT_EQ(wrong, 0) << lights << " lights, gamma " << gamma;
+        }
+    }
 }
 
 TEST_F(IllustrativeShadingTest, SwappingTheRampChangesExactlyTheDiffuseTerm) {
@@ -359,8 +440,8 @@ TEST_F(IllustrativeShadingTest, DedicatedRimLightsOnlyUpwardFacingPixelsFromTheC
         // checked where the sphere's normal is what the mesh shows.
         if (glm::dot(n, v) < 0.25f) return;
         const float f_r = std::pow(1.0f - glm::dot(n, v), 4.0f);
-        const glm::vec3 expected = std::max(n.z, 0.0f) * f_r * s.material.rim_boost *
-                                   cube_at(cube_, -v);
+        const glm::vec3 expected =
+            std::max(n.z, 0.0f) * f_r * s.material.rim_boost * cube_at(cube_, -v);
         ++checked;
         wrong += !near(drawn, to_rgb(expected), 8);
     });
@@ -427,7 +508,8 @@ TEST_F(IllustrativeShadingTest, TheNormalsDrawnAreTheSlotNormalsNotThePoseNormal
     set_cube(glm::vec3(0.0f));
     cube_[4] = glm::vec3(0.8f);
     store_cube();
-    const std::vector<Rgb> image = draw(terms(false, false, false), ShowTerm::ambient, ramp_a_.id());
+    const std::vector<Rgb> image =
+        draw(terms(false, false, false), ShowTerm::ambient, ramp_a_.id());
     int checked = 0, wrong = 0;
     for_inner_pixels(4, 0.3f, [&](int x, int y, glm::vec3, glm::vec3) {
         ++checked;
