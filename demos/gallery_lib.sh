@@ -6,6 +6,7 @@
 #             user's config cannot leak in)
 #   settings  array of "name|commands" pictures (commands on top of the defaults)
 #   out       the output folder
+#   engine_args  (optional) extra command-line arguments for every run, e.g. "+vo_enable 1"
 # Then: gallery_init; gallery_showroom; gallery_demo "300 600 760"; compare_sheets; group ...
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 data=${NPRQ_DATA:-$root/../shared/data}
@@ -38,7 +39,8 @@ script() {  # scene-prefix -> a config script taking every picture
 gallery_showroom() {
     script showroom > "$work/user/id1/gallery.cfg"
     SDL_VIDEODRIVER=offscreen "$engine" -userdir "$work/user" -basedir "$work/nodata" -width 640 \
-        -height 480 +con_notifytime 0 +r_plugin "$style" +showroom_time 5 +wait +exec gallery.cfg \
+        -height 480 +con_notifytime 0 ${engine_args:-} +r_plugin "$style" +showroom_time 5 +wait \
+        +exec gallery.cfg \
         +quit > "$work/showroom.log" 2>&1
 }
 
@@ -60,7 +62,8 @@ gallery_demo() {  # "frame frame ..."
     echo "quit" >> "$work/user/lq1/gallery.cfg"
     SDL_VIDEODRIVER=offscreen "$engine" -userdir "$work/user" -basedir "$data" -game lq1 -width 640 \
         -height 480 +con_notifytime 0 +scr_centertime 0 +scr_drawhud 0 +gl_polyblend 0 \
-        +r_plugin "$style" +exec frames.cfg +timedemo demo > "$work/demo.log" 2>&1 || true
+        ${engine_args:-} +r_plugin "$style" +exec frames.cfg +timedemo demo > "$work/demo.log" 2>&1 ||
+        true
 }
 
 sheet() {  # output title files...

@@ -16,7 +16,7 @@ source "$(dirname "$0")/gallery_lib.sh"
 
 # The cvar defaults, written out so a user's config cannot leak in.
 defaults="ill_show 0; ill_ramp tf2; ill_halflambert_alpha 0.5; ill_halflambert_beta 0.5;
-ill_halflambert_gamma 1; ill_ambient 1; ill_lights 1; ill_max_lights 4; ill_specular 1; ill_rim 1;
+ill_halflambert_gamma 1; ill_ambient 1; ill_lights 1; ill_max_lights 2; ill_specular 1; ill_rim 1;
 ill_dedicated_rim 1; ill_phong_exponent 20; ill_phong_boost 0.3; ill_fresnel_ranges \"0.3 1 8\";
 ill_rim_exponent 4; ill_rim_boost 2; ill_skin_masks 1; ill_team_saturation 1.5;
 ill_height_gradient 0; ill_height_floor 0.6; ill_smooth_normals 1; ill_crease_angle 60;
@@ -41,6 +41,7 @@ settings=(
     "ambient_2|ill_ambient 2"
     "lights_0|ill_lights 0"
     "lights_1_max|ill_max_lights 1"
+    "lights_4_max|ill_max_lights 4"
     "specular_off|ill_specular 0"
     "phong_boost_1|ill_phong_boost 1"
     "phong_exponent_5|ill_skin_masks 0; ill_phong_exponent 5"
@@ -73,7 +74,8 @@ group view_terms "specular, rims, both, final" specular rim view_dependent final
 group ramps "warp ramp: tf2, neutral, cel" final ramp_neutral ramp_cel
 group half_lambert "half-Lambert (default), Lambert, gamma 2" final lambert gamma_2
 group ambient "ambient cube x0, x1, x2" ambient_0 final ambient_2
-group lights "local lights off, one, four" lights_0 lights_1_max final
+group lights "local lights off, one per pixel, two (default), four" lights_0 lights_1_max final \
+    lights_4_max
 group specular "specular off, default, boost 1, exponent 5" specular_off final phong_boost_1 \
     phong_exponent_5
 group masks "skin masks off / on, flat Fresnel" masks_off final fresnel_flat

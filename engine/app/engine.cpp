@@ -108,6 +108,7 @@ bool Engine::start() {
          "menu scale on Quake's 320x200 menu canvas (limited to what fits the screen)", 1.0f,
          10.0f});
     register_game_cvars();
+    obscurance_cvars_.register_cvars(host_.cvars(), [this](const std::string& t) { print(t); });
     register_sound();
     input_ = std::make_unique<PlayerInput>(host_.commands());
     cvars_.gamma = host_.cvars().register_cvar(
@@ -416,6 +417,7 @@ void Engine::render_demo(double real_time, float frame_time) {
     scene_.set_occlusion_culling(cvars_.occlusion->value() != 0 && !multisampled_screen_);
     const nqr_frame& frame =
         scene_.build(level, demo_->client(), view, camera_for(view), real_time, frame_time);
+    dispatch_->set_obscurance(obscurance_cvars_.settings());
     dispatch_->draw(frame);
     // Engine-drawn, whatever the plugin: the tints over the 3D view, then the status bar.
     hud_->draw(demo_->client(), view.eye_contents, window_->drawable_width(),
@@ -430,6 +432,7 @@ void Engine::render_showroom(double real_time, float frame_time) {
         real_time = fixed;
         frame_time = 0;
     }
+    dispatch_->set_obscurance(obscurance_cvars_.settings());
     dispatch_->draw(showroom_->build(scene_, camera, real_time, real_time, frame_time));
 }
 

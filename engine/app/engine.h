@@ -20,6 +20,7 @@
 #include "app/engine_server_host.h"
 #include "app/game_data.h"
 #include "app/host_services.h"
+#include "app/obscurance_cvars.h"
 #include "app/render_dispatch.h"
 #include "app/scene_builder.h"
 #include "app/showroom.h"
@@ -176,6 +177,7 @@ class Engine {
     LaunchOptions options_;
     HostCore host_;
     EngineCvars cvars_;
+    ObscuranceCvars obscurance_cvars_;
     std::optional<Vfs> vfs_;
     GameData game_data_;
     std::optional<VideoWindow> window_;

@@ -1,5 +1,7 @@
 #include "app/render_dispatch.h"
 
+#include <algorithm>
+
 #include <epoxy/gl.h>
 
 #include "classic/classic_renderer.h"
@@ -35,7 +37,9 @@ constexpr Pass kPasses[] = {
 RenderDispatch::RenderDispatch(PluginHost& plugins, GpuPassTimers* timers)
     : plugins_(plugins), timers_(timers) {}
 
-RenderDispatch::~RenderDispatch() { unload(); }
+RenderDispatch::~RenderDispatch() {
+    unload();
+}
 
 std::string RenderDispatch::load_plugin(const std::string& name) {
     std::string why = plugins_.load(name);
@@ -67,8 +71,7 @@ void RenderDispatch::sync_defaults() {
     auto fresh = std::make_unique<npr::classic::ClassicRenderer>();
     std::string error;
     if (!fresh->init(&plugins_.engine_table(), &error)) {
-        plugins_.engine_table().log(NQR_LOG_ERROR,
-                                    ("default renderer failed: " + error).c_str());
+        plugins_.engine_table().log(NQR_LOG_ERROR, ("default renderer failed: " + error).c_str());
         return;
     }
     for (const nqr_model* m : plugins_.models()) fresh->register_model(m);
@@ -91,12 +94,18 @@ void RenderDispatch::clear_models() {
 
 void RenderDispatch::draw(const nqr_frame& frame) {
     const nqr_renderer* r = plugins_.active();
-    bool wants_gbuffer = r && (r->wants & NQR_WANTS_GBUFFER) &&
-                         gbuffer_.prepare(frame.camera.viewport[2], frame.camera.viewport[3]);
-    if (wants_gbuffer) gbuffer_.bind_and_clear();
+    // Obscurance reads the scene's depth and normals, so it draws into the G-buffer too.
+    const bool obscurance = obscurance_settings_.enabled && !obscurance_failed_;
+    const bool wants_gbuffer = (r && (r->wants & NQR_WANTS_GBUFFER)) || obscurance;
+    const bool use_gbuffer =
+        wants_gbuffer && gbuffer_.prepare(frame.camera.viewport[2], frame.camera.viewport[3]);
+    if (use_gbuffer) gbuffer_.bind_and_clear();
     if (r && r->begin_frame) r->begin_frame(&frame);
     draw_scene(r, frame);
-    if (wants_gbuffer) post_process(r, frame);
+    if (use_gbuffer) {
+        if (obscurance) apply_obscurance(frame);
+        post_process(r, frame);
+    }
     if (r && r->end_frame) r->end_frame(&frame);
 }
 
@@ -122,7 +131,7 @@ void RenderDispatch::post_process(const nqr_renderer* r, const nqr_frame& frame)
     const int* vp = frame.camera.viewport;
     glViewport(vp[0], vp[1], vp[2], vp[3]);
     if (timers_) timers_->begin(GpuPass::Post);
-    if (r->post_process) {
+    if (r && r->post_process) {
         r->post_process(&frame, &g);
     } else {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, g.framebuffer);
@@ -130,6 +139,26 @@ void RenderDispatch::post_process(const nqr_renderer* r, const nqr_frame& frame)
         glBlitFramebuffer(0, 0, g.width, g.height, vp[0], vp[1], vp[0] + vp[2], vp[1] + vp[3],
                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    }
+    if (timers_) timers_->end();
+}
+
+// Before the plugin's post-process (or the copy to the window): the scene colour multiplied by
+// its obscurance. A pass that cannot build is reported once and stays off.
+void RenderDispatch::apply_obscurance(const nqr_frame& frame) {
+    const nqr_gbuffer& g = gbuffer_.gbuffer();
+    npr::obscurance::SceneTextures scene;
+    scene.framebuffer = g.framebuffer;
+    scene.depth_texture = g.depth_texture;
+    scene.normal_texture = g.normal_texture;
+    scene.width = g.width;
+    scene.height = g.height;
+    std::copy_n(frame.camera.projection, 16, scene.projection);
+    if (timers_) timers_->begin("obscurance");
+    std::string error;
+    if (!obscurance_.apply(scene, obscurance_settings_, error)) {
+        obscurance_failed_ = true;
+        plugins_.engine_table().log(NQR_LOG_ERROR, ("obscurance off: " + error).c_str());
     }
     if (timers_) timers_->end();
 }

@@ -7,8 +7,9 @@
 #include <memory>
 #include <string>
 
-#include "nqr_renderer.h"
 #include "app/scene_framebuffer.h"
+#include "nqr_renderer.h"
+#include "obscurance/obscurance_pass.h"
 #include "plugin/plugin_host.h"
 
 namespace nq::npr::classic {
@@ -20,7 +21,7 @@ namespace nq {
 class GpuPassTimers;
 
 class RenderDispatch {
-public:
+  public:
     RenderDispatch(PluginHost& plugins, GpuPassTimers* timers);
     ~RenderDispatch();
 
@@ -35,18 +36,27 @@ public:
 
     void draw(const nqr_frame& frame);
 
+    // The engine-wide volumetric obscurance settings for the next draws (vo_*).
+    void set_obscurance(const npr::obscurance::ObscuranceSettings& settings) {
+        obscurance_settings_ = settings;
+    }
+
     bool defaults_active() const { return defaults_ != nullptr; }
 
-private:
+  private:
     bool plugin_draws_everything() const;
     void sync_defaults();
     void draw_scene(const nqr_renderer* r, const nqr_frame& frame);
     void post_process(const nqr_renderer* r, const nqr_frame& frame);
+    void apply_obscurance(const nqr_frame& frame);
 
     PluginHost& plugins_;
     GpuPassTimers* timers_;
     std::unique_ptr<npr::classic::ClassicRenderer> defaults_;
     SceneFramebuffer gbuffer_;
+    npr::obscurance::ObscuranceSettings obscurance_settings_;  // disabled by default
+    npr::obscurance::ObscurancePass obscurance_;
+    bool obscurance_failed_ = false;  // reported once; off for the rest of the run
 };
 
 }  // namespace nq

@@ -31,7 +31,9 @@ void main() {
 )";
 
 // What every brush fragment shader shares: the vertex shader's outputs, the two targets, and
-// the view-space normal written to the second one.
+// the view-space normal written to the second one; its alpha says whether the surface is solid
+// (1) or sky or liquid (0: water, slime, lava and teleporters are not solid, so screen-space
+// obscurance leaves them alone, as the clear colour's alpha does for the void).
 constexpr char kFragmentHeader[] = R"(#version 330 core
 in vec2 v_uv;
 in vec2 v_texel;
@@ -40,7 +42,7 @@ in vec3 v_normal;
 in vec3 v_world;
 layout(location = 0) out vec4 o_color;
 layout(location = 1) out vec4 o_normal;
-void write_normal() { o_normal = vec4(normalize(v_normal) * 0.5 + 0.5, 1.0); }
+void write_normal(float solid) { o_normal = vec4(normalize(v_normal) * 0.5 + 0.5, solid); }
 )";
 
 constexpr char kLitFragment[] = R"(
@@ -56,7 +58,7 @@ void main() {
     vec3 light = texture(u_lightmap, v_lightmap).rgb * u_overbright;
     vec3 color = base.rgb * light + texture(u_fullbright, v_uv).rgb;
     o_color = vec4(color, u_alpha);
-    write_normal();
+    write_normal(1.0);
 }
 )";
 
@@ -76,7 +78,7 @@ void main() {
     vec4 back = texture(u_texture, (u_scroll.x + sphere) / 128.0);
     vec4 front = texture(u_fullbright, (u_scroll.y + sphere) / 128.0);
     o_color = vec4(mix(back.rgb, front.rgb, front.a), u_alpha);
-    write_normal();
+    write_normal(0.0);
 }
 )";
 
@@ -89,7 +91,7 @@ uniform float u_alpha;
 void main() {
     vec2 warped = v_texel + 8.0 * sin(v_texel.yx * 0.125 + u_time);
     o_color = vec4(texture(u_texture, warped / u_texture_size).rgb, u_alpha);
-    write_normal();
+    write_normal(0.0);
 }
 )";
 

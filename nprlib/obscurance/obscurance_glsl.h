@@ -1,0 +1,34 @@
+// GLSL of the volumetric obscurance pass (obscurance_pass.h). Every stage draws one full-screen
+// triangle (kFullscreenVertex) and reads the scene's depth and view-space normals with nearest
+// fetches, so no sample blends depths across an edge.
+//
+// kEstimateFragment, compiled with "#define VO_LINES n" or "#define VO_POINTS n": the fraction
+// of the sphere of radius R around each pixel's view-space point that is open (not inside the
+// scene), 1 = unoccluded. Lines (the paper's 4.1): each sample (x, y, w) on the unit disk is a
+// line through the sphere along the view direction, half-length z_s = R sqrt(1 - x^2 - y^2);
+// the part in front of the depth buffer is open, max(min(z_s, d_r) + z_s, 0) with d_r the
+// scene's distance minus the pixel's. Points (Crytek style): a sample (x, y, z, w) in the unit
+// ball is open unless it lies behind the depth buffer. With the normal clamp (4.4) only the
+// part of the sphere above the pixel's tangent plane counts, so a flat surface is fully open;
+// without it, the fraction is doubled (a flat surface has half its sphere behind it). With a
+// thickness T (4.3) the scene is a shell T deep: what lies behind it is open again, so
+// foreground edges do not darken the background behind them. Two radii combine by product or
+// minimum. Each pixel rotates (and every other pixel reflects) its sample set by a 4x4 pattern,
+// which the blur then averages.
+//
+// kBlurFragment: one direction of a separable 9-tap Gaussian, each tap weighted down by its
+// depth difference relative to the centre's distance and by the angle between the normals.
+//
+// kCompositeFragment: the obscurance scaled by strength, written for multiplicative blending
+// over the scene colour (or shown alone).
+#pragma once
+
+namespace nq::npr::obscurance {
+
+extern const char* const kFullscreenVertex;
+extern const char* const kSceneLibrary;  // depth to distance, projection, normals
+extern const char* const kEstimateFragment;
+extern const char* const kBlurFragment;
+extern const char* const kCompositeFragment;
+
+}  // namespace nq::npr::obscurance

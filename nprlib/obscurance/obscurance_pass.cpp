@@ -1,0 +1,235 @@
+#include "obscurance/obscurance_pass.h"
+
+#include <epoxy/gl.h>
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "obscurance/obscurance_glsl.h"
+#include "obscurance/sample_tables.h"
+
+namespace nq::npr::obscurance {
+namespace {
+
+constexpr char kHeader[] = "#version 330 core\n";
+constexpr int kUnitDepth = 0;
+constexpr int kUnitNormal = 1;
+constexpr int kUnitOpen = 2;
+
+bool is_lines(ObscuranceMode mode) {
+    return mode == ObscuranceMode::lines5 || mode == ObscuranceMode::lines9;
+}
+
+int sample_count(ObscuranceMode mode) {
+    switch (mode) {
+        case ObscuranceMode::lines5:
+            return 5;
+        case ObscuranceMode::lines9:
+            return 9;
+        case ObscuranceMode::points12:
+            return 12;
+        case ObscuranceMode::points33:
+            return 33;
+    }
+    return 5;
+}
+
+std::string estimate_defines(ObscuranceMode mode) {
+    return std::string(is_lines(mode) ? "#define VO_LINES " : "#define VO_POINTS ") +
+           std::to_string(sample_count(mode)) + "\n";
+}
+
+void bind_texture(int unit, GLuint texture) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_2D, texture);
+}
+
+// GL state the pass changes and gives back.
+struct SavedState {
+    GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST);
+    GLboolean blend = glIsEnabled(GL_BLEND);
+    GLboolean cull = glIsEnabled(GL_CULL_FACE);
+    GLint viewport[4] = {};
+    GLint blend_source = GL_ONE, blend_destination = GL_ZERO;
+    SavedState() {
+        glGetIntegerv(GL_VIEWPORT, viewport);
+        glGetIntegerv(GL_BLEND_SRC_RGB, &blend_source);
+        glGetIntegerv(GL_BLEND_DST_RGB, &blend_destination);
+    }
+    ~SavedState() {
+        glBlendFunc(GLenum(blend_source), GLenum(blend_destination));
+        if (depth_test) glEnable(GL_DEPTH_TEST);
+        if (blend)
+            glEnable(GL_BLEND);
+        else
+            glDisable(GL_BLEND);
+        if (cull) glEnable(GL_CULL_FACE);
+        glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    }
+};
+
+}  // namespace
+
+void ObscurancePass::reset() {
+    for (gl::Program& program : estimate_) program.reset();
+    blur_.reset();
+    composite_.reset();
+    empty_vertex_array_.reset();
+    for (Target& target : targets_) target = Target{};
+    result_ = nullptr;
+    target_width_ = target_height_ = 0;
+}
+
+bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
+    gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
+    if (!estimate) {
+        const std::string fragment =
+            std::string(kHeader) + estimate_defines(mode) + kSceneLibrary + kEstimateFragment;
+        gl::ProgramBuild build = gl::Program::build(
+            {"obscurance estimate", kFullscreenVertex, fragment.c_str()}, tracker_);
+        if (!build.ok()) {
+            error = build.error;
+            return false;
+        }
+        estimate = std::move(build.program);
+        gl::bind_sampler_units(estimate, {"u_depth", "u_normal"});
+        estimate.use();
+        if (is_lines(mode)) {
+            const auto rows = line_sample_table(SampleMethod::electrostatic, sample_count(mode));
+            glUniform3fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
+        } else {
+            const auto rows = point_sample_table(SampleMethod::electrostatic, sample_count(mode));
+            glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
+        }
+    }
+    if (!blur_) {
+        const std::string fragment = std::string(kHeader) + kSceneLibrary + kBlurFragment;
+        gl::ProgramBuild build =
+            gl::Program::build({"obscurance blur", kFullscreenVertex, fragment.c_str()}, tracker_);
+        if (!build.ok()) {
+            error = build.error;
+            return false;
+        }
+        blur_ = std::move(build.program);
+        gl::bind_sampler_units(blur_, {"u_depth", "u_normal", "u_open"});
+    }
+    if (!composite_) {
+        gl::ProgramBuild build = gl::Program::build(
+            {"obscurance composite", kFullscreenVertex, kCompositeFragment}, tracker_);
+        if (!build.ok()) {
+            error = build.error;
+            return false;
+        }
+        composite_ = std::move(build.program);
+        composite_.use();
+        glUniform1i(composite_.location("u_open"), kUnitOpen);
+    }
+    if (!empty_vertex_array_) empty_vertex_array_ = gl::VertexArray::create(tracker_);
+    return true;
+}
+
+bool ObscurancePass::prepare_targets(int width, int height, std::string& error) {
+    if (targets_[0].texture && width == target_width_ && height == target_height_) return true;
+    for (Target& target : targets_) {
+        target.texture = gl::Texture::create(tracker_);
+        glBindTexture(GL_TEXTURE_2D, target.texture.id());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        target.framebuffer = gl::Framebuffer::create(tracker_);
+        glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                               target.texture.id(), 0);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            error = "obscurance: the driver refuses an R8 render target";
+            for (Target& t : targets_) t = Target{};
+            return false;
+        }
+    }
+    target_width_ = width;
+    target_height_ = height;
+    return true;
+}
+
+void ObscurancePass::bind_scene(gl::Program& program, const SceneTextures& scene) {
+    program.use();
+    const float* p = scene.projection;
+    glUniform4f(program.location("u_projection"), p[0], p[5], p[10], p[14]);
+    glUniform2i(program.location("u_scene_size"), scene.width, scene.height);
+    bind_texture(kUnitDepth, scene.depth_texture);
+    bind_texture(kUnitNormal, scene.normal_texture);
+}
+
+void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettings& settings) {
+    gl::Program& program = estimate_[static_cast<size_t>(settings.mode)];
+    bind_scene(program, scene);
+    glUniform2f(program.location("u_radii"), settings.radius, settings.radius2);
+    glUniform1i(program.location("u_dual_minimum"), settings.dual == DualRadius::minimum);
+    glUniform1f(program.location("u_thickness"), settings.thickness);
+    glUniform1i(program.location("u_normal_clamp"), settings.normal_clamp ? 1 : 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_[0].framebuffer.id());
+    glViewport(0, 0, target_width_, target_height_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    result_ = &targets_[0].texture;
+}
+
+void ObscurancePass::blur(const SceneTextures& scene) {
+    bind_scene(blur_, scene);
+    const GLint step = blur_.location("u_step");
+    for (int pass = 0; pass < 2; ++pass) {
+        const Target& from = targets_[size_t(pass)];
+        const Target& to = targets_[size_t(1 - pass)];
+        glUniform2i(step, pass == 0 ? 1 : 0, pass == 0 ? 0 : 1);
+        bind_texture(kUnitOpen, from.texture.id());
+        glBindFramebuffer(GL_FRAMEBUFFER, to.framebuffer.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        result_ = &to.texture;
+    }
+}
+
+void ObscurancePass::composite(const SceneTextures& scene, const ObscuranceSettings& settings) {
+    glBindFramebuffer(GL_FRAMEBUFFER, scene.framebuffer);
+    const GLenum colour_only = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &colour_only);
+    glViewport(0, 0, scene.width, scene.height);
+    composite_.use();
+    glUniform1f(composite_.location("u_strength"), settings.show ? 1.0f : settings.strength);
+    bind_texture(kUnitOpen, result_->id());
+    if (settings.show) {
+        glDisable(GL_BLEND);
+    } else {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ZERO, GL_SRC_COLOR);  // colour *= obscurance
+    }
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, both);
+}
+
+bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings& settings,
+                           std::string& error) {
+    if (scene.width <= 0 || scene.height <= 0) return true;
+    if (!build_programs(settings.mode, error)) return false;
+    const int width = settings.half_resolution ? (scene.width + 1) / 2 : scene.width;
+    const int height = settings.half_resolution ? (scene.height + 1) / 2 : scene.height;
+    SavedState saved;
+    if (!prepare_targets(width, height, error)) {
+        glBindFramebuffer(GL_FRAMEBUFFER, scene.framebuffer);
+        return false;
+    }
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(empty_vertex_array_.id());
+    estimate(scene, settings);
+    if (settings.blur) blur(scene);
+    composite(scene, settings);
+    glBindVertexArray(0);
+    glActiveTexture(GL_TEXTURE0);
+    return true;
+}
+
+}  // namespace nq::npr::obscurance

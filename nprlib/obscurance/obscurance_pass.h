@@ -1,0 +1,63 @@
+// Screen-space volumetric obscurance (Loos & Sloan 2010) over a rendered scene's depth and
+// view-space normals, applied to its colour: estimate (obscurance_glsl.h) at full or half
+// resolution, an edge-aware blur, then the colour multiplied by the result (or the result shown
+// alone). Style-independent: the engine runs it after any plugin's scene passes, before the
+// HUD. The sample sets are the committed electrostatic tables (sample_tables.h).
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "gl/handles.h"
+#include "gl/program.h"
+#include "obscurance/obscurance_settings.h"
+
+namespace nq::npr::obscurance {
+
+// The scene the pass reads and writes: a framebuffer whose colour attachment 0 is the image,
+// its depth texture (a symmetric perspective's depths) and its normal texture (view-space,
+// n * 0.5 + 0.5, alpha 1 where a surface should receive obscurance).
+struct SceneTextures {
+    GLuint framebuffer = 0;
+    GLuint depth_texture = 0;
+    GLuint normal_texture = 0;
+    int width = 0, height = 0;
+    float projection[16] = {};  // column-major, view to clip
+};
+
+class ObscurancePass {
+  public:
+    explicit ObscurancePass(gl::ObjectTracker* tracker = nullptr) : tracker_(tracker) {}
+
+    // Multiplies the scene's colour by its obscurance. Leaves blending and depth testing off
+    // as they were found, the scene framebuffer bound with both of its colour outputs.
+    // False with `error` when a program does not build (the scene is left as it was).
+    bool apply(const SceneTextures& scene, const ObscuranceSettings& settings, std::string& error);
+
+    // The last result (R8, 1 = open), at the pass's resolution; 0 before the first apply.
+    GLuint open_texture() const { return result_ ? result_->id() : 0; }
+
+    void reset();
+
+  private:
+    struct Target {
+        gl::Texture texture;
+        gl::Framebuffer framebuffer;
+    };
+    bool build_programs(ObscuranceMode mode, std::string& error);
+    bool prepare_targets(int width, int height, std::string& error);
+    void estimate(const SceneTextures& scene, const ObscuranceSettings& settings);
+    void blur(const SceneTextures& scene);
+    void composite(const SceneTextures& scene, const ObscuranceSettings& settings);
+    void bind_scene(gl::Program& program, const SceneTextures& scene);
+
+    gl::ObjectTracker* tracker_;
+    std::array<gl::Program, kObscuranceModes> estimate_;
+    gl::Program blur_, composite_;
+    gl::VertexArray empty_vertex_array_;
+    std::array<Target, 2> targets_;
+    const gl::Texture* result_ = nullptr;
+    int target_width_ = 0, target_height_ = 0;
+};
+
+}  // namespace nq::npr::obscurance

@@ -1,0 +1,40 @@
+// Every parameter of the screen-space volumetric obscurance pass (Loos & Sloan, "Volumetric
+// Obscurance", I3D 2010), with its default. The engine fills this from its vo_* cvars
+// (docs/console.md); the pass only reads it.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace nq::npr::obscurance {
+
+// vo_mode: how the sphere around each pixel is sampled.
+enum class ObscuranceMode {
+    lines5,    // 5 line samples on the disk, each integrating occupancy along the sphere's depth
+    lines9,    // 9 line samples
+    points12,  // 12 point samples in the ball (Crytek-style baseline)
+    points33,  // 33 point samples
+};
+inline constexpr int kObscuranceModes = 4;
+
+std::optional<ObscuranceMode> parse_obscurance_mode(std::string_view name);
+std::string_view obscurance_mode_name(ObscuranceMode mode);
+
+// How two radii combine (vo_radius2 > 0): their obscurances multiplied, or the smaller taken.
+enum class DualRadius { product, minimum };
+
+struct ObscuranceSettings {
+    bool enabled = false;
+    ObscuranceMode mode = ObscuranceMode::lines5;
+    float radius = 24.0f;  // world units (Quake units; a player is 56 tall)
+    float radius2 = 0.0f;  // a second sphere (0 = none)
+    DualRadius dual = DualRadius::product;
+    float thickness = 32.0f;   // occluders are this thick (0 = infinitely: halos behind edges)
+    float strength = 1.0f;     // 0 = no effect, 1 = the obscurance as measured
+    bool normal_clamp = true;  // the tangent plane bounds each sample (flat surfaces stay open)
+    bool blur = true;          // edge-aware (depth and normal) bilateral blur
+    bool half_resolution = false;
+    bool show = false;  // vo_show: the obscurance alone, in grey
+};
+
+}  // namespace nq::npr::obscurance

@@ -1,0 +1,373 @@
+// The volumetric obscurance pass (nprlib/obscurance/obscurance_pass) on real pixels (Mesa
+// llvmpipe), over G-buffers ray-cast here from planes, against volumes computed here: a flat
+// floor stays open with the normal clamp; a floor meeting a wall is darkened by the part of the
+// hemisphere the wall cuts off, 1 - (R - h)^2 (2R + h) / (4 R^3) at distance h from it; a
+// foreground edge leaves no halo on the background behind it with a thickness (and does
+// without); the blur keeps the wall's and the floor's values apart; sky is never darkened; the
+// colour is multiplied by the result, or shows it alone.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "nprlib_test_support.h"
+#include "obscurance/obscurance_pass.h"
+
+namespace nq::npr::test {
+namespace {
+
+using obscurance::ObscuranceMode;
+using obscurance::ObscurancePass;
+using obscurance::ObscuranceSettings;
+
+constexpr float kNear = 4.0f, kFar = 4096.0f;
+
+// What a pixel's ray hits: its distance along the view axis and its view-space normal.
+struct Hit {
+    float distance;
+    glm::vec3 normal;
+};
+// A plane n . x = d in view space (the camera at the origin looking down -z).
+struct Plane {
+    glm::vec3 normal;
+    float d;
+};
+
+class ObscurancePassTest : public GlSuiteTest<ObscurancePassTest> {
+  protected:
+    void SetUp() override {
+        GlSuiteTest::SetUp();
+        if (HasFatalFailure()) return;
+        projection_ = glm::perspective(glm::radians(90.0f), 1.0f, kNear, kFar);
+        colour_ = make_texture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE);
+        normal_ = make_texture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE);
+        depth_ = make_texture(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT);
+        glGenFramebuffers(1, &framebuffer_);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, normal_, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_, 0);
+        ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    }
+
+    void TearDown() override {
+        pass_.reset();
+        EXPECT_EQ(tracker_.total_live(), 0);
+        glDeleteFramebuffers(1, &framebuffer_);
+        GLuint textures[] = {colour_, normal_, depth_};
+        glDeleteTextures(3, textures);
+    }
+
+    static GLuint make_texture(GLenum internal_format, GLenum format, GLenum type) {
+        GLuint texture = 0;
+        glGenTextures(1, &texture);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glTexImage2D(GL_TEXTURE_2D, 0, internal_format, kSize, kSize, 0, format, type, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        return texture;
+    }
+
+    // The view ray through pixel (x, y)'s centre, scaled so that its z is -1.
+    glm::vec3 ray(int x, int y) const {
+        const float ndc_x = (x + 0.5f) / (kSize / 2.0f) - 1.0f;
+        const float ndc_y = (y + 0.5f) / (kSize / 2.0f) - 1.0f;
+        return {ndc_x / projection_[0][0], ndc_y / projection_[1][1], -1.0f};
+    }
+
+    // Ray-casts the nearest plane per pixel into the depth and normal textures (no hit: sky),
+    // and fills the colour with white.
+    void build_scene(const std::vector<Plane>& planes) {
+        hits_.assign(size_t(kSize) * kSize, std::nullopt);
+        std::vector<float> depth(size_t(kSize) * kSize, 1.0f);
+        std::vector<uint8_t> normals(size_t(kSize) * kSize * 4, 0);
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                const glm::vec3 r = ray(x, y);
+                std::optional<Hit> best;
+                for (const Plane& plane : planes) {
+                    const float along = glm::dot(plane.normal, r);
+                    if (along >= -1e-6f) continue;    // parallel or seen from behind
+                    const float t = plane.d / along;  // the hit is r * t, distance t
+                    if (t > kNear && (!best || t < best->distance)) best = Hit{t, plane.normal};
+                }
+                const size_t i = size_t(y) * kSize + size_t(x);
+                hits_[i] = best;
+                if (!best) continue;
+                const glm::vec4 clip = projection_ * glm::vec4(r * best->distance, 1.0f);
+                depth[i] = clip.z / clip.w * 0.5f + 0.5f;
+                const glm::vec3 encoded = best->normal * 0.5f + 0.5f;
+                for (int k = 0; k < 3; ++k)
+                    normals[i * 4 + k] = uint8_t(std::lround(encoded[k] * 255));
+                normals[i * 4 + 3] = 255;
+            }
+        }
+        glBindTexture(GL_TEXTURE_2D, depth_);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT,
+                        depth.data());
+        glBindTexture(GL_TEXTURE_2D, normal_);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE,
+                        normals.data());
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        const GLfloat white[] = {1, 1, 1, 1};
+        glClearBufferfv(GL_COLOR, 0, white);
+    }
+
+    // Runs the pass; the scene colour (white before) per pixel, 0..1 from its red channel.
+    std::vector<float> run(const ObscuranceSettings& settings) {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        const GLfloat white[] = {1, 1, 1, 1};
+        glClearBufferfv(GL_COLOR, 0, white);
+        obscurance::SceneTextures scene;
+        scene.framebuffer = framebuffer_;
+        scene.depth_texture = depth_;
+        scene.normal_texture = normal_;
+        scene.width = scene.height = kSize;
+        std::copy_n(glm::value_ptr(projection_), 16, scene.projection);
+        std::string error;
+        EXPECT_TRUE(pass_.apply(scene, settings, error)) << error;
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        std::vector<uint8_t> rgba(size_t(kSize) * kSize * 4);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+        std::vector<float> out(size_t(kSize) * kSize);
+        for (size_t i = 0; i < out.size(); ++i) out[i] = rgba[i * 4] / 255.0f;
+        return out;
+    }
+
+    // Mean |drawn - expected| over pixels with a hit where `expected` gives a value.
+    float mean_error(
+        const std::vector<float>& drawn,
+        const std::function<std::optional<float>(glm::vec3 point, const Hit&)>& expected,
+        int& counted) const {
+        double sum = 0.0;
+        counted = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                const size_t i = size_t(y) * kSize + size_t(x);
+                if (!hits_[i]) continue;
+                const std::optional<float> e = expected(ray(x, y) * hits_[i]->distance, *hits_[i]);
+                if (!e) continue;
+                sum += std::abs(drawn[i] - *e);
+                ++counted;
+            }
+        }
+        return counted ? float(sum / counted) : 1.0f;
+    }
+
+    static ObscuranceSettings settings_for(ObscuranceMode mode) {
+        ObscuranceSettings s;
+        s.enabled = true;
+        s.mode = mode;
+        s.blur = false;
+        return s;
+    }
+
+    gl::ObjectTracker tracker_;
+    ObscurancePass pass_{&tracker_};
+    glm::mat4 projection_;
+    GLuint colour_ = 0, normal_ = 0, depth_ = 0, framebuffer_ = 0;
+    std::vector<std::optional<Hit>> hits_;
+};
+
+constexpr ObscuranceMode kModes[] = {ObscuranceMode::lines5, ObscuranceMode::lines9,
+                                     ObscuranceMode::points12, ObscuranceMode::points33};
+
+// The floor y = -40 and the wall z = -160 (view space), meeting in a crease across the view.
+const Plane kFloor{{0.0f, 1.0f, 0.0f}, -40.0f};
+const Plane kWall{{0.0f, 0.0f, 1.0f}, -160.0f};
+
+// How far a point of the floor is from the wall, or a point of the wall from the floor.
+float distance_to_crease(glm::vec3 p, const Hit& hit) {
+    return hit.normal.y > 0.5f ? p.z - kWall.d * kWall.normal.z : p.y - kFloor.d;
+}
+
+// The open fraction of the hemisphere above a surface at distance h < R from a perpendicular
+// wall: the wall cuts a cap of height R - h off the sphere, half of it above the surface.
+float open_near_wall(float h, float radius) {
+    if (h >= radius) return 1.0f;
+    const float cut =
+        (radius - h) * (radius - h) * (2.0f * radius + h) / (4.0f * radius * radius * radius);
+    return 1.0f - cut;
+}
+
+TEST_F(ObscurancePassTest, AFlatFloorStaysOpenWithTheNormalClamp) {
+    build_scene({kFloor});
+    for (ObscuranceMode mode : kModes) {
+        const std::vector<float> drawn = run(settings_for(mode));
+        int counted = 0;
+        const float error = mean_error(
+            drawn, [](glm::vec3, const Hit&) { return 1.0f; }, counted);
+        EXPECT_GT(counted, kSize * kSize / 3);
+        // Points sit on depth texels spanning long stretches of a floor seen at a grazing angle.
+        const bool points = mode == ObscuranceMode::points12 || mode == ObscuranceMode::points33;
+        EXPECT_LT(error, points ? 0.04f : 0.025f) << obscurance::obscurance_mode_name(mode);
+    }
+}
+
+TEST_F(ObscurancePassTest, TheCreaseIsDarkenedByTheVolumeTheWallCutsOff) {
+    build_scene({kFloor, kWall});
+    ObscuranceSettings s = settings_for(ObscuranceMode::lines9);
+    s.radius = 24.0f;
+    s.thickness = 0.0f;
+    const auto expected = [&](glm::vec3 p, const Hit& hit) -> std::optional<float> {
+        // Floor: distance to the wall plane z = -160; wall: height above the floor y = -40.
+        const float distance = distance_to_crease(p, hit);
+        return open_near_wall(distance, s.radius);
+    };
+    for (ObscuranceMode mode : kModes) {
+        s.mode = mode;
+        const std::vector<float> drawn = run(s);
+        int counted = 0;
+        EXPECT_LT(mean_error(drawn, expected, counted), 0.06f)
+            << obscurance::obscurance_mode_name(mode);
+        // Near the crease only: the darkening is really there, not a constant near 1.
+        const auto near_crease = [&](glm::vec3 p, const Hit& hit) -> std::optional<float> {
+            const float distance = distance_to_crease(p, hit);
+            if (distance > 0.5f * s.radius) return std::nullopt;
+            return open_near_wall(distance, s.radius);
+        };
+        // Points are the coarser estimate (the paper's point: 12 points err more than 5 lines).
+        const float tolerance = mode == ObscuranceMode::points12 ? 0.18f : 0.11f;
+        EXPECT_LT(mean_error(drawn, near_crease, counted), tolerance)
+            << obscurance::obscurance_mode_name(mode);
+        EXPECT_GT(counted, 100);
+        double mean = 0.0;
+        int n = 0;
+        for (size_t i = 0; i < drawn.size(); ++i) {
+            if (!hits_[i]) continue;
+            const glm::vec3 p = ray(int(i % kSize), int(i / kSize)) * hits_[i]->distance;
+            const float distance = distance_to_crease(p, *hits_[i]);
+            if (distance < 0.25f * s.radius) {
+                mean += drawn[i];
+                ++n;
+            }
+        }
+        ASSERT_GT(n, 0);
+        EXPECT_LT(mean / n, 0.8) << obscurance::obscurance_mode_name(mode);  // the truth: ~0.57
+    }
+}
+
+// A near plane covering the left half in front of a far wall: the wall's pixels beside the
+// silhouette must not be darkened by an occluder far in front of their sphere.
+TEST_F(ObscurancePassTest, AForegroundEdgeLeavesNoHaloBehindItWithAThickness) {
+    // The left half of the view is a wall facing the camera at distance 100, the right half
+    // one at 400.
+    hits_.assign(size_t(kSize) * kSize, std::nullopt);
+    std::vector<float> depth(size_t(kSize) * kSize);
+    std::vector<uint8_t> normals(size_t(kSize) * kSize * 4, 255);
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const size_t i = size_t(y) * kSize + size_t(x);
+            const float distance = x < kSize / 2 ? 100.0f : 400.0f;
+            hits_[i] = Hit{distance, {0.0f, 0.0f, 1.0f}};
+            const glm::vec4 clip = projection_ * glm::vec4(ray(x, y) * distance, 1.0f);
+            depth[i] = clip.z / clip.w * 0.5f + 0.5f;
+            normals[i * 4 + 0] = normals[i * 4 + 1] = 128;
+        }
+    }
+    glBindTexture(GL_TEXTURE_2D, depth_);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT,
+                    depth.data());
+    glBindTexture(GL_TEXTURE_2D, normal_);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE,
+                    normals.data());
+    for (ObscuranceMode mode : kModes) {
+        ObscuranceSettings s = settings_for(mode);
+        s.radius = 48.0f;
+        s.thickness = 32.0f;
+        s.blur = true;
+        const std::vector<float> with_thickness = run(s);
+        s.thickness = 0.0f;
+        s.blur = false;
+        const std::vector<float> infinitely_thick = run(s);
+        float lowest_with = 1.0f, lowest_without = 1.0f;
+        for (int y = 8; y < kSize - 8; ++y) {
+            for (int x = kSize / 2; x < kSize / 2 + 6; ++x) {
+                lowest_with = std::min(lowest_with, with_thickness[size_t(y) * kSize + size_t(x)]);
+                lowest_without =
+                    std::min(lowest_without, infinitely_thick[size_t(y) * kSize + size_t(x)]);
+            }
+        }
+        EXPECT_GE(lowest_with, 0.97f) << obscurance::obscurance_mode_name(mode);
+        EXPECT_LT(lowest_without, 0.8f) << obscurance::obscurance_mode_name(mode);
+    }
+}
+
+TEST_F(ObscurancePassTest, TheBlurKeepsTheWallAndTheFloorApartAndSmoothsThePattern) {
+    build_scene({kFloor, kWall});
+    ObscuranceSettings s = settings_for(ObscuranceMode::lines5);
+    s.thickness = 0.0f;
+    const std::vector<float> raw = run(s);
+    s.blur = true;
+    const std::vector<float> blurred = run(s);
+    const auto expected = [&](glm::vec3 p, const Hit& hit) -> std::optional<float> {
+        return open_near_wall(distance_to_crease(p, hit), s.radius);
+    };
+    int counted = 0;
+    const float raw_error = mean_error(raw, expected, counted);
+    const float blurred_error = mean_error(blurred, expected, counted);
+    EXPECT_LT(blurred_error, 0.06f);
+    EXPECT_LE(blurred_error, raw_error + 0.005f);
+}
+
+TEST_F(ObscurancePassTest, SkyIsNeverDarkenedAndTheColourIsMultipliedOrShown) {
+    build_scene({kFloor});  // the upper half sees nothing: sky
+    ObscuranceSettings s = settings_for(ObscuranceMode::lines5);
+    std::vector<float> drawn = run(s);
+    int sky = 0;
+    for (size_t i = 0; i < drawn.size(); ++i) {
+        if (hits_[i]) continue;
+        ++sky;
+        EXPECT_EQ(drawn[i], 1.0f);
+    }
+    EXPECT_GT(sky, kSize * kSize / 4);
+    // Strength 0 leaves the image; show draws the obscurance itself over the colour.
+    build_scene({kFloor, kWall});
+    s.strength = 0.0f;
+    for (float v : run(s)) EXPECT_EQ(v, 1.0f);
+    s.strength = 1.0f;
+    const std::vector<float> multiplied = run(s);
+    s.show = true;
+    s.strength = 0.0f;  // show ignores the strength
+    const std::vector<float> shown = run(s);
+    int darker = 0;
+    for (size_t i = 0; i < shown.size(); ++i) {
+        EXPECT_NEAR(shown[i], multiplied[i], 1.5f / 255.0f);
+        darker += shown[i] < 0.9f;
+    }
+    EXPECT_GT(darker, 100);
+}
+
+TEST_F(ObscurancePassTest, HalfResolutionGivesTheSameVolumes) {
+    build_scene({kFloor, kWall});
+    ObscuranceSettings s = settings_for(ObscuranceMode::lines9);
+    s.thickness = 0.0f;
+    s.half_resolution = true;
+    s.blur = true;
+    const std::vector<float> drawn = run(s);
+    const auto expected = [&](glm::vec3 p, const Hit& hit) -> std::optional<float> {
+        return open_near_wall(distance_to_crease(p, hit), s.radius);
+    };
+    int counted = 0;
+    EXPECT_LT(mean_error(drawn, expected, counted), 0.07f);
+}
+
+TEST_F(ObscurancePassTest, TheModeNamesRoundTrip) {
+    for (ObscuranceMode mode : kModes) {
+        EXPECT_EQ(obscurance::parse_obscurance_mode(obscurance::obscurance_mode_name(mode)), mode);
+    }
+    EXPECT_FALSE(obscurance::parse_obscurance_mode("lines6"));
+    EXPECT_FALSE(obscurance::parse_obscurance_mode(""));
+}
+
+}  // namespace
+}  // namespace nq::npr::test
