@@ -1,6 +1,10 @@
 #include "classic/brush_textures.h"
 
+#include <algorithm>
+#include <atomic>
 #include <span>
+#include <thread>
+#include <vector>
 
 #include "classic/abi_access.h"
 #include "gl/texture_upload.h"
@@ -51,10 +55,26 @@ void create_sky_layers(gl::ObjectTracker* tracker, const nqr_texture& source,
     out.size[1] = static_cast<float>(source.height);
 }
 
+gl::PaletteExpansion expansion_of(SurfaceKind kind) {
+    gl::PaletteExpansion expansion;
+    expansion.blacken_fullbrights = kind != SurfaceKind::liquid;
+    if (kind == SurfaceKind::fence) expansion.transparent = gl::Transparent::index255;
+    return expansion;
+}
+
+bool has_pixels(const nqr_texture& source) {
+    return source.mips[0] != nullptr && source.width > 0 && source.height > 0;
+}
+
+std::span<const uint8_t> base_pixels(const nqr_texture& source) {
+    return {source.mips[0], static_cast<size_t>(source.width) * source.height};
+}
+
+// `filtered`: the base texels already expanded and filtered (may be null: done here).
 BrushTextureGpu create_one(gl::ObjectTracker* tracker, const nqr_texture& source,
-                           const uint8_t* palette, const gl::RgbaFilter* filter) {
-    const bool has_pixels = source.mips[0] != nullptr && source.width > 0 && source.height > 0;
-    if (!has_pixels) return placeholder_texture(tracker);
+                           const uint8_t* palette, const gl::RgbaFilter* filter,
+                           const std::vector<uint8_t>* filtered) {
+    if (!has_pixels(source)) return placeholder_texture(tracker);
     BrushTextureGpu out;
     out.kind = surface_kind_of(source);
     if (out.kind == SurfaceKind::sky && source.width >= 2) {
@@ -63,13 +83,16 @@ BrushTextureGpu create_one(gl::ObjectTracker* tracker, const nqr_texture& source
     }
     const int width = static_cast<int>(source.width);
     const int height = static_cast<int>(source.height);
-    std::span<const uint8_t> pixels(source.mips[0], static_cast<size_t>(width) * height);
+    const std::span<const uint8_t> pixels = base_pixels(source);
     std::vector<uint8_t> scratch;
-    gl::PaletteExpansion expansion;
-    expansion.blacken_fullbrights = out.kind != SurfaceKind::liquid;
-    if (out.kind == SurfaceKind::fence) expansion.transparent = gl::Transparent::index255;
-    out.base = gl::create_palette_texture(tracker, width, height, pixels, palette, expansion,
-                                          gl::kMipmappedRepeat, scratch, filter);
+    if (filtered && !filtered->empty()) {
+        out.base =
+            gl::create_rgba8_texture(tracker, width, height, *filtered, gl::kMipmappedRepeat);
+    } else {
+        out.base = gl::create_palette_texture(tracker, width, height, pixels, palette,
+                                              expansion_of(out.kind), gl::kMipmappedRepeat, scratch,
+                                              filter);
+    }
     if (out.kind != SurfaceKind::liquid) {
         out.fullbright = gl::create_fullbright_texture(tracker, width, height, pixels, palette,
                                                        gl::kMipmappedRepeat, scratch);
@@ -77,6 +100,38 @@ BrushTextureGpu create_one(gl::ObjectTracker* tracker, const nqr_texture& source
     out.size[0] = static_cast<float>(width);
     out.size[1] = static_cast<float>(height);
     return out;
+}
+
+// A filter costs milliseconds per texture (the illustrative style's abstraction), so the base
+// texels of every filtered texture are expanded and filtered on worker threads before the
+// uploads, which stay on the GL thread. An entry left empty (no pixels, sky, or a filter that
+// threw) is done the ordinary way.
+std::vector<std::vector<uint8_t>> filter_in_parallel(const nqr_brush_model& brush,
+                                                     const uint8_t* palette,
+                                                     const gl::RgbaFilter& filter) {
+    std::vector<std::vector<uint8_t>> filtered(brush.num_textures);
+    std::atomic<uint32_t> next{0};
+    auto work = [&] {
+        for (uint32_t i = next++; i < brush.num_textures; i = next++) {
+            const nqr_texture& source = abi_element(brush.textures, i);
+            const SurfaceKind kind = surface_kind_of(source);
+            if (!has_pixels(source) || kind == SurfaceKind::sky) continue;
+            try {
+                gl::expand_palette_texels(int(source.width), int(source.height),
+                                          base_pixels(source), palette, expansion_of(kind),
+                                          filtered[i], &filter);
+            } catch (...) {
+                filtered[i].clear();
+            }
+        }
+    };
+    const unsigned workers =
+        std::clamp(std::thread::hardware_concurrency(), 1u, std::min(8u, brush.num_textures));
+    std::vector<std::thread> threads;
+    for (unsigned w = 1; w < workers; ++w) threads.emplace_back(work);
+    work();
+    for (std::thread& thread : threads) thread.join();
+    return filtered;
 }
 
 }  // namespace
@@ -94,8 +149,13 @@ std::vector<BrushTextureGpu> create_brush_textures(gl::ObjectTracker* tracker,
                                                    const gl::RgbaFilter* filter) {
     std::vector<BrushTextureGpu> textures;
     textures.reserve(brush.num_textures + 1);
+    std::vector<std::vector<uint8_t>> filtered;
+    if (filter && *filter && brush.num_textures > 0) {
+        filtered = filter_in_parallel(brush, palette_rgb, *filter);
+    }
     for (uint32_t i = 0; i < brush.num_textures; ++i) {
-        textures.push_back(create_one(tracker, abi_element(brush.textures, i), palette_rgb, filter));
+        textures.push_back(create_one(tracker, abi_element(brush.textures, i), palette_rgb, filter,
+                                      filtered.empty() ? nullptr : &filtered[i]));
     }
     textures.push_back(placeholder_texture(tracker));
     return textures;

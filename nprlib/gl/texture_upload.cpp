@@ -31,12 +31,18 @@ Texture create_palette_texture(ObjectTracker* tracker, int width, int height,
                                std::span<const uint8_t> pixels, const uint8_t* palette_rgb,
                                PaletteExpansion expansion, const Sampling& sampling,
                                std::vector<uint8_t>& scratch, const RgbaFilter* filter) {
-    expand_palette_image(pixels, palette_rgb, expansion, scratch);
-    if (expansion.transparent != Transparent::none) {
-        bleed_colour_into_transparent_texels(scratch, width, height);
-    }
-    if (filter && *filter) (*filter)(width, height, scratch);
+    expand_palette_texels(width, height, pixels, palette_rgb, expansion, scratch, filter);
     return create_rgba8_texture(tracker, width, height, scratch, sampling);
+}
+
+void expand_palette_texels(int width, int height, std::span<const uint8_t> pixels,
+                           const uint8_t* palette_rgb, PaletteExpansion expansion,
+                           std::vector<uint8_t>& rgba, const RgbaFilter* filter) {
+    expand_palette_image(pixels, palette_rgb, expansion, rgba);
+    if (expansion.transparent != Transparent::none) {
+        bleed_colour_into_transparent_texels(rgba, width, height);
+    }
+    if (filter && *filter) (*filter)(width, height, rgba);
 }
 
 Texture create_fullbright_texture(ObjectTracker* tracker, int width, int height,

@@ -42,6 +42,12 @@ Texture create_solid_texture(ObjectTracker* tracker, uint8_t r, uint8_t g, uint8
 // world's textures, for instance). Runs at load time only.
 using RgbaFilter = std::function<void(int width, int height, std::vector<uint8_t>& rgba)>;
 
+// Palette image -> RGBA8 texels as create_palette_texture uploads them: expanded, transparent
+// texels bled, then `filter` (may be null). Touches no GL state, so it may run on any thread.
+void expand_palette_texels(int width, int height, std::span<const uint8_t> pixels,
+                           const uint8_t* palette_rgb, PaletteExpansion expansion,
+                           std::vector<uint8_t>& rgba, const RgbaFilter* filter = nullptr);
+
 // Palette image -> RGBA8 texture in one call; `scratch` is reused between calls. `filter`, when
 // given, sees the expanded texels first.
 Texture create_palette_texture(ObjectTracker* tracker, int width, int height,
