@@ -152,7 +152,6 @@ const float kGauss[5] = float[5](0.2270270, 0.1945946, 0.1216216, 0.0540541, 0.0
 void main() {
     ivec2 size = textureSize(u_open, 0);
     ivec2 centre = clamp(ivec2(v_uv * vec2(size)), ivec2(0), size - 1);
-    vec2 to_scene = vec2(u_scene_size) / vec2(size);
     ivec2 scene_centre = scene_texel((vec2(centre) + 0.5) / vec2(size));
     vec4 n0 = scene_normal(scene_centre);
     if (n0.a < 0.5) {
