@@ -6,7 +6,11 @@
 #
 # usage: demos/bench_timedemo.sh [--rounds N] [--plugins "classic technical"] [--demos "demo demo2"]
 #                                [--res "640x480 1024x768"] [--no-peer | --peer quakespasm]
-#                                [--out DIR]
+#                                [--trace] [--out DIR]
+#   --demos   demo names in the game data, or paths of .dem files (e.g. demos/record_gameplay.sh's
+#             recordings: copied into the run's user dir; QuakeSpasm gets the same file)
+#   --trace   also write every run's per-frame trace (-benchtrace) to DIR/traces/; read them
+#             with demos/frame_trace.py
 # env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
 # Output: one line per run on stdout with a progress count and an estimate of the time left;
 # in --out (default build/bench): results.jsonl (one record per run: fps, the -benchjson record
@@ -22,6 +26,7 @@ plugins="classic"
 demos="demo demo2"
 resolutions="640x480 1024x768"
 peer=1
+trace=0
 out=$root/build/bench
 while [ $# -gt 0 ]; do
     case $1 in
@@ -32,6 +37,7 @@ while [ $# -gt 0 ]; do
         --no-peer) peer=0; shift ;;
         --peer) [ "$2" = quakespasm ] && peer=1 || peer=0; shift 2 ;;
         --out) out=$2; shift 2 ;;
+        --trace) trace=1; shift ;;
         *) echo "bench_timedemo.sh: unknown option $1" >&2; exit 2 ;;
     esac
 done
@@ -42,7 +48,16 @@ peer_script=$root/../shared/tools/quakespasm_timedemo.sh
 if [ $peer = 1 ] && [ ! -x "$peer_script" ]; then
     echo "bench_timedemo.sh: $peer_script not found; use --no-peer" >&2; exit 1
 fi
-mkdir -p "$out/frames" "$out/logs" "$out/user"
+mkdir -p "$out/frames" "$out/logs" "$out/user/lq1" "$out/traces"
+
+# A demo given as a file: the engine finds it by name in the user dir.
+demo_name() { case $1 in *.dem) basename "$1" .dem ;; *) echo "$1" ;; esac; }
+for demo in $demos; do
+    case $demo in
+        *.dem) [ -f "$demo" ] || { echo "bench_timedemo.sh: $demo: no such file" >&2; exit 1; }
+               cp "$demo" "$out/user/lq1/" ;;
+    esac
+done
 results=$out/results.jsonl
 : > "$results"
 
@@ -53,13 +68,17 @@ json_string() {
 }
 
 run_ours() {  # round plugin demo WxH
-    local round=$1 plugin=$2 demo=$3 res=$4
+    local round=$1 plugin=$2 demo res=$4
+    demo=$(demo_name "$3")
     local w=${res%x*} h=${res#*x} name="nprquake_${plugin}_${demo}_${res}_r${round}"
+    local trace_args=()
+    [ $trace = 1 ] && trace_args=(-benchtrace "$out/traces/$name.tsv")
     local rec=$out/rec.json frames=$out/frames/$name.txt log=$out/logs/$name.log status=0
-    rm -f "$rec" "$frames"
+    rm -f "$rec" "$frames" "$out/traces/$name.tsv"
     SDL_VIDEODRIVER=offscreen "$engine" -userdir "$out/user" -basedir "$data" -game lq1 \
         -width "$w" -height "$h" -window -benchjson "$rec" -benchframes "$frames" \
-        -benchmark "$demo" -benchmarkruns 1 +r_plugin "$plugin" > "$log" 2>&1 || status=$?
+        -benchmark "$demo" -benchmarkruns 1 "${trace_args[@]}" +r_plugin "$plugin" > "$log" 2>&1 ||
+        status=$?
     local line fps startup failure=""
     line=$(grep -E '^[0-9]+ frames' "$log" | tail -1) || true
     fps=$(echo "$line" | awk '{print $5}')
@@ -78,8 +97,9 @@ run_ours() {  # round plugin demo WxH
 }
 
 run_peer() {  # round demo WxH
-    local round=$1 demo=$2 res=$3 line fps status=0
-    line=$("$peer_script" "$demo" "$res" 1 2>"$out/logs/quakespasm_${demo}_${res}_r$round.log" | tail -1) ||
+    local round=$1 demo res=$3 line fps status=0
+    demo=$(demo_name "$2")
+    line=$("$peer_script" "$2" "$res" 1 2>"$out/logs/quakespasm_${demo}_${res}_r$round.log" | tail -1) ||
         status=$?
     fps=$(echo "$line" | awk '{print $4}')
     case $fps in ''|FAIL|*[!0-9.]*) fps="" ;; esac

@@ -177,6 +177,11 @@ bool Engine::start() {
         command_line_.value("-plugindir").value_or(executable_dir() + "/plugins");
     plugins_ = std::make_unique<PluginHost>(*services_, plugin_dir);
     dispatch_ = std::make_unique<RenderDispatch>(*plugins_, &gpu_timers_);
+    if (options_.bench_trace) {
+        trace_.enable();
+        gpu_timers_.set_listener(&trace_);
+        dispatch_->set_trace(&trace_);
+    }
 
     DemoSessionCallbacks callbacks;
     callbacks.print = [this](std::string_view t) { print(t); };
@@ -282,6 +287,7 @@ int Engine::run() {
 }
 
 void Engine::frame() {
+    trace_.begin_frame();
     double now = seconds();
     double frame_time = now - last_frame_seconds_;
     last_frame_seconds_ = now;
@@ -289,6 +295,7 @@ void Engine::frame() {
     handle_events();
     host_.commands().execute();
     console_->update(now - start_seconds_);
+    trace_.lap(TraceStage::Input);
     // A paused demo draws the same instant again: timedemo does not count those frames.
     bool timing = demo_->active() && demo_->mode() == DemoMode::TimeDemo && !demo_->paused();
     const bool game_timing = demo_->live() && !demo_->paused();
@@ -302,6 +309,7 @@ void Engine::frame() {
             status = demo_->frame(frame_time);
         }
         run_demo_schedule();
+        trace_.lap(TraceStage::Demo);
         if (status == FrameStatus::Ended) {
             const bool next_in_loop = demo_loop_.playing();
             end_demo();
@@ -311,6 +319,8 @@ void Engine::frame() {
     }
     render(frame_time);
     update_sound(frame_time);
+    trace_.lap(TraceStage::Sound);
+    trace_.end_frame(timing);
     if (first_frame_seconds_ < 0) {
         first_frame_seconds_ = seconds() - start_seconds_;
         print("start-up to first frame: " + std::to_string(first_frame_seconds_) + " s");
@@ -381,7 +391,11 @@ void Engine::render(double frame_time) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // GPU time of paused frames stays out of the timedemo report, like their CPU time.
     bool timed = !demo_->paused();
-    if (timed) gpu_timers_.begin_frame();
+    if (timed) {
+        gpu_timers_.begin_frame();
+        trace_.set_gpu_frame(gpu_timers_.frame_serial());
+    }
+    trace_.lap(TraceStage::FrameStart);
     double real_time = seconds() - start_seconds_;
     if (demo_->active() && demo_->level_ready()) {
         render_demo(real_time, static_cast<float>(frame_time));
@@ -396,8 +410,10 @@ void Engine::render(double frame_time) {
                            window_->drawable_height());
     }
     if (timed) gpu_timers_.end_frame();
+    trace_.lap(TraceStage::Overlay);
     window_->swap();
     throttle_.frame_submitted();
+    trace_.lap(TraceStage::Swap);
 }
 
 void Engine::render_demo(double real_time, float frame_time) {
@@ -417,6 +433,10 @@ void Engine::render_demo(double real_time, float frame_time) {
     scene_.set_occlusion_culling(cvars_.occlusion->value() != 0 && !multisampled_screen_);
     const nqr_frame& frame =
         scene_.build(level, demo_->client(), view, camera_for(view), real_time, frame_time);
+    trace_.set_contents(
+        {frame.num_brush_entities + frame.num_alias_entities + frame.num_sprite_entities,
+         frame.num_dlights, frame.num_particles});
+    trace_.lap(TraceStage::Scene);
     dispatch_->set_obscurance(obscurance_cvars_.settings());
     dispatch_->draw(frame);
     // Engine-drawn, whatever the plugin: the tints over the 3D view, then the status bar.

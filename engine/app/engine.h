@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "app/demo_loop.h"
 #include "app/benchmark_runs.h"
+#include "app/demo_loop.h"
 #include "app/demo_session.h"
 #include "app/engine_menu.h"
 #include "app/engine_server_host.h"
@@ -40,6 +40,7 @@
 #include "sound/sound_system.h"
 #include "video/frame_stats.h"
 #include "video/frame_throttle.h"
+#include "video/frame_trace.h"
 #include "video/gamma_pass.h"
 #include "video/gpu_pass_timers.h"
 #include "video/video_window.h"
@@ -160,6 +161,7 @@ class Engine {
     void timedemo_failed(const std::string& name, const std::string& why);
     void report_timedemo(const FrameSummary& summary);
     void write_frame_times(const FrameSummary& summary);
+    void write_frame_trace();
 
     // engine_benchmark.cpp: -benchmark DEMO -benchmarkruns N
     void queue_benchmark();
@@ -182,6 +184,7 @@ class Engine {
     GameData game_data_;
     std::optional<VideoWindow> window_;
     GpuPassTimers gpu_timers_;
+    FrameTrace trace_;        // -benchtrace
     FrameThrottle throttle_;  // after window_: goes while the context is still there
     std::unique_ptr<Console> console_;
     std::optional<ConsoleDrawer> console_drawer_;

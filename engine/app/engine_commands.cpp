@@ -138,6 +138,7 @@ void Engine::start_demo(const std::string& name, DemoMode mode) {
     after_demo_text_ = host_.commands().take_pending_text();
     frame_times_.clear();
     gpu_timers_.reset();
+    trace_.clear();
 }
 
 void Engine::end_demo() {
@@ -176,6 +177,7 @@ void Engine::finish_timedemo() {
     if (!failure.empty()) return timedemo_failed(demo_->name(), failure);
     report_timedemo(summary);
     write_frame_times(summary);
+    write_frame_trace();
     if (benchmark_) benchmark_run_done(summary);
 }
 
@@ -200,6 +202,15 @@ void Engine::write_frame_times(const FrameSummary& summary) {
     if (counted.size() < summary.frames) print("benchframes: more frames than were stored");
     std::string error = append_frame_times(*options_.bench_frames, header, counted);
     if (!error.empty()) print("benchframes: " + error);
+}
+
+// After report_timedemo, which reads back the GPU times of the run's last frames.
+void Engine::write_frame_trace() {
+    if (!options_.bench_trace) return;
+    TraceHeader header{demo_->name(), plugins_->active_name(), window_->drawable_width(),
+                       window_->drawable_height()};
+    std::string error = trace_.append_to(*options_.bench_trace, header, &gpu_timers_);
+    if (!error.empty()) print("benchtrace: " + error);
 }
 
 void Engine::report_timedemo(const FrameSummary& s) {

@@ -5,6 +5,7 @@
 #include <epoxy/gl.h>
 
 #include "classic/classic_renderer.h"
+#include "video/frame_trace.h"
 #include "video/gpu_pass_timers.h"
 
 namespace nq {
@@ -16,19 +17,21 @@ using DefaultHook = void (npr::classic::ClassicRenderer::*)(const nqr_frame*);
 
 struct Pass {
     GpuPass pass;
+    TraceStage stage;
     Hook nqr_renderer::*hook;
     DefaultHook fallback;
 };
 
 constexpr Pass kPasses[] = {
-    {GpuPass::World, &nqr_renderer::draw_world, &npr::classic::ClassicRenderer::draw_world},
-    {GpuPass::Brush, &nqr_renderer::draw_brush_entities,
+    {GpuPass::World, TraceStage::World, &nqr_renderer::draw_world,
+     &npr::classic::ClassicRenderer::draw_world},
+    {GpuPass::Brush, TraceStage::Brush, &nqr_renderer::draw_brush_entities,
      &npr::classic::ClassicRenderer::draw_brush_entities},
-    {GpuPass::Alias, &nqr_renderer::draw_alias_entities,
+    {GpuPass::Alias, TraceStage::Alias, &nqr_renderer::draw_alias_entities,
      &npr::classic::ClassicRenderer::draw_alias_entities},
-    {GpuPass::Sprites, &nqr_renderer::draw_sprite_entities,
+    {GpuPass::Sprites, TraceStage::Sprites, &nqr_renderer::draw_sprite_entities,
      &npr::classic::ClassicRenderer::draw_sprite_entities},
-    {GpuPass::Particles, &nqr_renderer::draw_particles,
+    {GpuPass::Particles, TraceStage::Particles, &nqr_renderer::draw_particles,
      &npr::classic::ClassicRenderer::draw_particles},
 };
 
@@ -104,9 +107,11 @@ void RenderDispatch::draw(const nqr_frame& frame) {
     draw_scene(r, frame);
     if (use_gbuffer) {
         if (obscurance) apply_obscurance(frame);
+        if (trace_) trace_->lap(TraceStage::Obscurance);
         post_process(r, frame);
     }
     if (r && r->end_frame) r->end_frame(&frame);
+    if (trace_) trace_->lap(TraceStage::Post);
 }
 
 void RenderDispatch::draw_scene(const nqr_renderer* r, const nqr_frame& frame) {
@@ -120,6 +125,7 @@ void RenderDispatch::draw_scene(const nqr_renderer* r, const nqr_frame& frame) {
             ((*defaults_).*p.fallback)(&frame);
         }
         if (timers_) timers_->end();
+        if (trace_) trace_->lap(p.stage);
     }
 }
 

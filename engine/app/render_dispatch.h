@@ -19,6 +19,7 @@ class ClassicRenderer;
 namespace nq {
 
 class GpuPassTimers;
+class FrameTrace;
 
 class RenderDispatch {
   public:
@@ -43,6 +44,9 @@ class RenderDispatch {
 
     bool defaults_active() const { return defaults_ != nullptr; }
 
+    // -benchtrace: each pass's CPU time is charged to its stage (may be null).
+    void set_trace(FrameTrace* trace) { trace_ = trace; }
+
   private:
     bool plugin_draws_everything() const;
     void sync_defaults();
@@ -52,6 +56,7 @@ class RenderDispatch {
 
     PluginHost& plugins_;
     GpuPassTimers* timers_;
+    FrameTrace* trace_ = nullptr;
     std::unique_ptr<npr::classic::ClassicRenderer> defaults_;
     SceneFramebuffer gbuffer_;
     npr::obscurance::ObscuranceSettings obscurance_settings_;  // disabled by default

@@ -71,9 +71,10 @@ LaunchOptions read_launch_options(const CommandLine& line) {
         whole_number(line, "-benchmarkruns", "a number of runs", kMaxBenchmarkRuns, errors)
             .value_or(1);
     options.bench_frames = required_value(line, "-benchframes", "a file name", errors);
+    options.bench_trace = required_value(line, "-benchtrace", "a file name", errors);
     // A flag given without its value leaves no usable setting behind.
     for (auto* text : {&options.basedir, &options.game, &options.bench_json, &options.benchmark,
-                       &options.bench_frames}) {
+                       &options.bench_frames, &options.bench_trace}) {
         if (*text && (*text)->empty()) text->reset();
     }
     return options;

@@ -22,6 +22,7 @@ struct LaunchOptions {
     std::optional<std::string> benchmark;     // -benchmark DEMO: time DEMO, report, quit
     int benchmark_runs = 1;                   // -benchmarkruns N: timedemos in one -benchmark
     std::optional<std::string> bench_frames;  // -benchframes FILE: every timedemo's frame times
+    std::optional<std::string> bench_trace;   // -benchtrace FILE: per frame, where the time went
     std::vector<std::string> errors;          // one line per unusable option; empty when all fine
 };
 

@@ -60,6 +60,7 @@ void GpuPassTimers::begin_frame() {
     FrameSlot& slot = slots_[slot_];
     if (slot.pending) collect(slot);
     slot.count = 0;
+    slot.serial = frames_;
     in_frame_ = true;
 }
 
@@ -147,9 +148,10 @@ void GpuPassTimers::collect(FrameSlot& slot) {
 void GpuPassTimers::attribute(const FrameSlot& slot) {
     std::array<int8_t, kMaxGpuPassDepth> open{};
     int depth = 0;
+    frame_nanoseconds_.fill(0);
     for (int i = 0; i < slot.count; ++i) {
         if (i > 0 && depth > 0 && timestamps_[i] > timestamps_[i - 1]) {
-            nanoseconds_[open[depth - 1]] += timestamps_[i] - timestamps_[i - 1];
+            frame_nanoseconds_[open[depth - 1]] += timestamps_[i] - timestamps_[i - 1];
         }
         const Marker& m = slot.markers[i];
         if (m.begin && depth < kMaxGpuPassDepth) {
@@ -157,6 +159,12 @@ void GpuPassTimers::attribute(const FrameSlot& slot) {
         } else if (!m.begin && depth > 0) {
             --depth;
         }
+    }
+    for (int pass = 0; pass < num_passes_; ++pass) nanoseconds_[pass] += frame_nanoseconds_[pass];
+    if (listener_) {
+        listener_->gpu_frame_timed(
+            slot.serial,
+            std::span<const uint64_t>(frame_nanoseconds_.data(), static_cast<size_t>(num_passes_)));
     }
 }
 

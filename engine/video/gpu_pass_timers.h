@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -44,6 +45,14 @@ struct GpuTimerDiagnostics {
     uint64_t dropped_passes = 0;  // marker budget or nesting depth exceeded: pass untimed
     uint64_t unknown_passes = 0;  // name table full or name empty / too long
     uint64_t unbalanced = 0;      // end() without begin(), or passes still open at end_frame()
+};
+
+// Told each frame's per-pass times when they are read back (kGpuTimerFramesInFlight frames
+// after the frame), for a per-frame trace. `frame` is the frame_serial() the frame had.
+class GpuFrameListener {
+  public:
+    virtual ~GpuFrameListener() = default;
+    virtual void gpu_frame_timed(uint64_t frame, std::span<const uint64_t> pass_nanoseconds) = 0;
 };
 
 class GpuPassTimers {
@@ -74,6 +83,11 @@ class GpuPassTimers {
     // One entry per known pass, built-in ones first, in registration order.
     std::vector<GpuPassTotals> totals() const;
     uint64_t frames_timed() const { return frames_; }
+    // The number the frame now being issued has (counted from reset()).
+    uint64_t frame_serial() const { return frames_; }
+    int num_passes() const { return num_passes_; }
+    std::string_view pass_name(int pass) const { return names_[pass].data(); }
+    void set_listener(GpuFrameListener* listener) { listener_ = listener; }
     uint64_t total_nanoseconds(std::string_view name) const;
     uint64_t pass_count(std::string_view name) const;
     const GpuTimerDiagnostics& diagnostics() const { return diagnostics_; }
@@ -87,6 +101,7 @@ class GpuPassTimers {
         std::array<GLuint, kMaxGpuMarkersPerFrame> queries{};
         std::array<Marker, kMaxGpuMarkersPerFrame> markers{};
         int count = 0;
+        uint64_t serial = 0;
         bool pending = false;  // markers issued, results not read yet
     };
 
@@ -106,6 +121,8 @@ class GpuPassTimers {
     std::array<std::array<char, kMaxGpuPassNameLength + 1>, kMaxGpuPasses> names_{};
     int num_passes_ = 0;
     std::array<uint64_t, kMaxGpuPasses> nanoseconds_{};
+    std::array<uint64_t, kMaxGpuPasses> frame_nanoseconds_{};  // scratch for attribute()
+    GpuFrameListener* listener_ = nullptr;
     std::array<uint64_t, kMaxGpuPasses> counts_{};
     uint64_t frames_ = 0;
 

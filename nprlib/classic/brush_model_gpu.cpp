@@ -51,8 +51,7 @@ void set_float_attribute(GLuint location, GLint components, size_t offset) {
 
 std::unique_ptr<BrushModelGpu> BrushModelGpu::create(gl::ObjectTracker* tracker,
                                                      const nqr_brush_model& brush,
-                                                     const uint8_t* palette_rgb,
-                                                     std::string& error,
+                                                     const uint8_t* palette_rgb, std::string& error,
                                                      const gl::RgbaFilter* texture_filter) {
     if (!validate(brush, error)) return nullptr;
     std::unique_ptr<BrushModelGpu> model(new BrushModelGpu());
@@ -124,8 +123,8 @@ void BrushModelGpu::rebuild_surface(uint32_t surface, const float* styles,
     ++lightmap_rebuilds_;
 }
 
-void BrushModelGpu::update_lightmaps(SurfaceSelection selection, const float* lightstyles,
-                                     std::span<const DynamicLight> lights) {
+void BrushModelGpu::rebuild_lightmaps(SurfaceSelection selection, const float* lightstyles,
+                                      std::span<const DynamicLight> lights) {
     for (uint32_t i = 0; i < selection.count; ++i) {
         const uint32_t surface = selection.at(i);
         if (surface >= surfaces_.size() || surfaces_[surface].lightmap_page < 0) continue;
@@ -139,7 +138,6 @@ void BrushModelGpu::update_lightmaps(SurfaceSelection selection, const float* li
             rebuild_surface(surface, styles, lights, lit_dynamically);
         }
     }
-    atlas_.upload_dirty();
 }
 
 uint32_t BrushModelGpu::texture_slot_for(const nqr_surface& surface, double time,

@@ -42,10 +42,13 @@ class BrushModelGpu {
     const nqr_brush_model& brush() const { return *brush_; }
     uint32_t num_surfaces() const { return static_cast<uint32_t>(surfaces_.size()); }
 
-    // Rebuilds the lightmaps of selected surfaces whose style values changed, that dynamic lights
-    // reach now or reached at their last build; then uploads the changed rectangles.
-    void update_lightmaps(SurfaceSelection selection, const float* lightstyles,
-                          std::span<const DynamicLight> lights);
+    // Rebuilds (in the CPU copy) the lightmaps of selected surfaces whose style values changed,
+    // that dynamic lights reach now or reached at their last build.
+    void rebuild_lightmaps(SurfaceSelection selection, const float* lightstyles,
+                           std::span<const DynamicLight> lights);
+    // Sends what the rebuilds changed since the last call. Once per frame, before the first
+    // draw that reads the lightmaps: see LightmapAtlas.
+    void upload_lightmaps() { atlas_.upload_dirty(); }
 
     // Groups the selection by the texture drawn at `time` (alternate chains when `alternate`).
     const SurfaceBatches& batch(SurfaceSelection selection, double time, bool alternate);

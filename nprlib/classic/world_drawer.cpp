@@ -144,24 +144,68 @@ void WorldDrawer::draw_selection(const nqr_frame& frame, const FrameView& view,
                                  BrushModelGpu& model, SurfaceSelection selection,
                                  const glm::mat4& model_matrix, bool alternate_animation,
                                  float alpha) {
-    model.update_lightmaps(selection, frame.lightstyles, gather_lights(frame, model_matrix));
     const SurfaceBatches& batches = model.batch(selection, frame.time, alternate_animation);
     draw_batches(frame, view, model, batches, model_matrix, alpha);
+}
+
+const RegisteredModel* WorldDrawer::world_selection(const nqr_frame& frame,
+                                                    const ModelRegistry& models,
+                                                    SurfaceSelection& selection) {
+    const RegisteredModel* world = models.find(frame.world);
+    if (!world || !world->brush) return nullptr;
+    if (frame.visible_surfaces) {
+        selection = {frame.visible_surfaces, 0, frame.num_visible_surfaces};
+    } else {
+        selection = {nullptr, world->first_surface, world->num_surfaces};
+    }
+    return world;
+}
+
+template <typename Visit>
+void WorldDrawer::for_each_brush_entity(const nqr_frame& frame, const ModelRegistry& models,
+                                        Visit&& visit) {
+    if (!frame.brush_entities) return;
+    for (uint32_t i = 0; i < frame.num_brush_entities; ++i) {
+        const nqr_entity* entity = frame.brush_entities[i];
+        if (!entity_in_view(entity)) continue;
+        const RegisteredModel* model = models.find(entity->model);
+        if (!model || !model->brush) continue;
+        visit(*entity, *model,
+              SurfaceSelection{nullptr, model->first_surface, model->num_surfaces});
+    }
+}
+
+void WorldDrawer::prepare_lightmaps(const nqr_frame& frame, const ModelRegistry& models,
+                                    bool with_world) {
+    SurfaceSelection selection;
+    const RegisteredModel* world = with_world ? world_selection(frame, models, selection) : nullptr;
+    if (world) {
+        world->brush->rebuild_lightmaps(selection, frame.lightstyles,
+                                        gather_lights(frame, glm::mat4(1.0f)));
+    }
+    auto rebuild = [&](const nqr_entity& entity, const RegisteredModel& model,
+                       SurfaceSelection surfaces) {
+        model.brush->rebuild_lightmaps(surfaces, frame.lightstyles,
+                                       gather_lights(frame, mat4_from(entity.model_matrix)));
+    };
+    for_each_brush_entity(frame, models, rebuild);
+    // Every rebuild before the first upload: a model's atlas then changes texture once a frame.
+    if (world) world->brush->upload_lightmaps();
+    for_each_brush_entity(frame, models,
+                          [](const nqr_entity&, const RegisteredModel& model, SurfaceSelection) {
+                              model.brush->upload_lightmaps();
+                          });
 }
 
 void WorldDrawer::draw_world(const nqr_frame& frame, const ModelRegistry& models) {
     FrameView view;
     if (!read_frame_view(&frame, view)) return;
-    const RegisteredModel* world = models.find(frame.world);
-    if (!world || !world->brush) return;
     SurfaceSelection selection;
-    if (frame.visible_surfaces) {
-        selection.indices = frame.visible_surfaces;
-        selection.count = frame.num_visible_surfaces;
-    } else {
-        selection.first = world->first_surface;
-        selection.count = world->num_surfaces;
-    }
+    const RegisteredModel* world = world_selection(frame, models, selection);
+    if (!world) return;
+    prepare_lightmaps(frame, models, true);
+    entities_prepared_for_ = frame.number;
+    entities_prepared_ = true;
     begin_classic_pass();
     draw_selection(frame, view, *world->brush, selection, glm::mat4(1.0f), false, 1.0f);
     end_classic_pass();
@@ -170,16 +214,17 @@ void WorldDrawer::draw_world(const nqr_frame& frame, const ModelRegistry& models
 void WorldDrawer::draw_brush_entities(const nqr_frame& frame, const ModelRegistry& models) {
     FrameView view;
     if (!read_frame_view(&frame, view) || !frame.brush_entities) return;
-    begin_classic_pass();
-    for (uint32_t i = 0; i < frame.num_brush_entities; ++i) {
-        const nqr_entity* entity = frame.brush_entities[i];
-        if (!entity_in_view(entity)) continue;
-        const RegisteredModel* model = models.find(entity->model);
-        if (!model || !model->brush) continue;
-        const SurfaceSelection selection{nullptr, model->first_surface, model->num_surfaces};
-        draw_selection(frame, view, *model->brush, selection, mat4_from(entity->model_matrix),
-                       entity->frame != 0, entity_alpha(entity->alpha));
+    if (!entities_prepared_ || entities_prepared_for_ != frame.number) {
+        prepare_lightmaps(frame, models, false);  // no world pass ran before this one
     }
+    entities_prepared_ = false;
+    begin_classic_pass();
+    for_each_brush_entity(
+        frame, models,
+        [&](const nqr_entity& entity, const RegisteredModel& model, SurfaceSelection selection) {
+            draw_selection(frame, view, *model.brush, selection, mat4_from(entity.model_matrix),
+                           entity.frame != 0, entity_alpha(entity.alpha));
+        });
     end_classic_pass();
 }
 

@@ -38,15 +38,26 @@ class WorldDrawer {
     void draw_world(const nqr_frame& frame, const ModelRegistry& models);
     void draw_brush_entities(const nqr_frame& frame, const ModelRegistry& models);
 
-    // One selection of a brush model placed by `model_matrix`; frame dynamic lights are moved
-    // into model space with the matrix's inverse.
+    // One selection of a brush model placed by `model_matrix`, with the lightmaps as the frame's
+    // prepare_lightmaps left them.
     void draw_selection(const nqr_frame& frame, const FrameView& view, BrushModelGpu& model,
                         SurfaceSelection selection, const glm::mat4& model_matrix,
                         bool alternate_animation, float alpha);
 
     BrushSettings settings;
 
+    // Rebuilds the lightmaps the frame changes (the world's visible surfaces when `with_world`,
+    // every brush entity in view; dynamic lights moved into each model's space), then uploads
+    // them, before anything is drawn with them. draw_world does it for both passes.
+    void prepare_lightmaps(const nqr_frame& frame, const ModelRegistry& models, bool with_world);
+
   private:
+    static const RegisteredModel* world_selection(const nqr_frame& frame,
+                                                  const ModelRegistry& models,
+                                                  SurfaceSelection& selection);
+    template <typename Visit>
+    static void for_each_brush_entity(const nqr_frame& frame, const ModelRegistry& models,
+                                      Visit&& visit);
     std::span<const DynamicLight> gather_lights(const nqr_frame& frame,
                                                 const glm::mat4& model_matrix);
     void draw_batches(const nqr_frame& frame, const FrameView& view, BrushModelGpu& model,
@@ -59,6 +70,9 @@ class WorldDrawer {
     BrushPrograms programs_;
     gl::Texture black_;  // bound where a texture has no fullbright pixel
     std::array<DynamicLight, kMaxDynamicLights> lights_{};
+    // draw_world prepared the brush entities' lightmaps of this frame number too.
+    uint64_t entities_prepared_for_ = 0;
+    bool entities_prepared_ = false;
 };
 
 }  // namespace nq::npr::classic

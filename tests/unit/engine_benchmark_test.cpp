@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -98,6 +99,71 @@ TEST(EngineBenchmark, RunsTheTimedemoNTimesAndReportsTheSpreadOfTheirFrameRates)
         for (double ms : sections[i].ms) seconds += ms / 1000;
         EXPECT_NEAR(seconds, runs[i].seconds, 0.06);
     }
+}
+
+// Splits a tab-separated line.
+std::vector<std::string> tab_fields(const std::string& line) {
+    std::vector<std::string> fields;
+    std::stringstream in(line);
+    for (std::string field; std::getline(in, field, '\t');) fields.push_back(field);
+    if (!line.empty() && line.back() == '\t') fields.push_back("");
+    return fields;
+}
+
+// -benchtrace: a row per counted frame whose stages add up to the frame time the timedemo
+// measured itself (-benchframes, an independent clock reading), GPU pass times read back for
+// every frame, and what each frame held.
+TEST(EngineBenchmark, TraceExplainsEveryCountedFrame) {
+    TempDir dir("nq_engine_trace");
+    auto args = engine_runs::base_args(dir.path(), data_root(), "lq1");
+    engine_runs::add(args, {"-benchmark", "demo", "-benchframes", dir.file("frames.txt"),
+                            "-benchtrace", dir.file("trace.tsv"), "+r_plugin", "classic"});
+    ProcessResult r = run_nprquake(args, dir.path(), 300);
+    expect_clean_exit(r);
+    Vfs vfs = mount_lq1();
+    const uint64_t frames = timedemo_frame_count(vfs, "demo.dem");
+    auto sections = frames_sections(dir.file("frames.txt"));
+    ASSERT_EQ(sections.size(), 1u);
+    ASSERT_EQ(sections[0].ms.size(), frames);
+
+    auto lines = file_lines(dir.file("trace.tsv"));
+    ASSERT_EQ(lines.size(), frames + 2);
+    EXPECT_EQ(lines[0], "# demo classic 320x240 " + std::to_string(frames));
+    const auto columns = tab_fields(lines[1]);
+    auto column = [&](const std::string& name) {
+        auto it = std::find(columns.begin(), columns.end(), name);
+        return it == columns.end() ? -1 : static_cast<int>(it - columns.begin());
+    };
+    const int total = column("total_ms"), world = column("world_ms"), sound = column("sound_ms");
+    const int entities = column("entities"), gpu_world = column("gpu_world_ms");
+    ASSERT_EQ(total, 1);
+    ASSERT_GT(world, total);
+    ASSERT_GT(sound, world);
+    ASSERT_GE(entities, 0);
+    // The engine prints the GPU passes when the driver can time them; then so does the trace.
+    const bool gpu_timed = !lines_containing(r.out, "  gpu world").empty();
+    EXPECT_EQ(gpu_world >= 0, gpu_timed) << lines[1];
+
+    size_t with_world = 0, with_entities = 0, with_gpu = 0, mismatched = 0;
+    for (size_t i = 0; i < frames; ++i) {
+        const auto row = tab_fields(lines[i + 2]);
+        ASSERT_EQ(row.size(), columns.size()) << lines[i + 2];
+        EXPECT_EQ(std::stoul(row[0]), i);
+        double stages = 0;
+        for (int c = total + 1; c <= sound; ++c) stages += std::stod(row[c]);
+        const double frame_ms = sections[0].ms[i];
+        EXPECT_NEAR(std::stod(row[total]), stages, 0.01 + 1e-4 * stages) << "frame " << i;
+        // The two clocks are read a few statements apart: a busy machine can preempt in
+        // between, so a few frames may differ by more.
+        mismatched += std::abs(stages - frame_ms) > 0.3 + 0.03 * frame_ms;
+        with_world += std::stod(row[world]) > 0;
+        with_entities += std::stoul(row[entities]) > 0;
+        with_gpu += gpu_world >= 0 && !row[gpu_world].empty();
+    }
+    EXPECT_LE(mismatched, frames / 100) << "frames whose stages do not add up to their time";
+    EXPECT_EQ(with_world, frames);
+    EXPECT_GT(with_entities, frames / 2);
+    if (gpu_timed) EXPECT_EQ(with_gpu, frames);
 }
 
 TEST(EngineBenchmark, FailedBenchmarkExitsNonZeroAndLogsNoFigure) {

@@ -56,11 +56,14 @@ TEST(HostCommandLine, FlagsWithAndWithoutValues) {
 }
 
 TEST(HostCommandLine, BenchmarkOptions) {
-    LaunchOptions options = read_launch_options(CommandLine::parse(
-        {"-benchmark", "demo2", "-benchmarkruns", "5", "-benchframes", "frames.txt"}));
+    LaunchOptions options = read_launch_options(
+        CommandLine::parse({"-benchmark", "demo2", "-benchmarkruns", "5", "-benchframes",
+                            "frames.txt", "-benchtrace", "trace.tsv"}));
     EXPECT_EQ(options.benchmark, "demo2");
     EXPECT_EQ(options.benchmark_runs, 5);
     EXPECT_EQ(options.bench_frames, "frames.txt");
+    EXPECT_EQ(options.bench_trace, "trace.tsv");
+    EXPECT_FALSE(read_launch_options(CommandLine::parse({"-benchtrace"})).bench_trace);
     EXPECT_TRUE(options.errors.empty());
     EXPECT_EQ(read_launch_options(CommandLine::parse({"-benchmark", "demo"})).benchmark_runs, 1);
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "classic/classic_renderer.h"
+#include "classic/lightmap_atlas.h"
 #include "nprlib_test_support.h"
 
 namespace nq::npr::test {
@@ -169,6 +170,68 @@ TEST_F(ClassicWorldTest, StylesCombineAndOnlyChangedLightmapsAreRebuilt) {
     const Rgb texture = colour(colour::kOrange);
     const double stored = std::floor((60.0 + 40.0 * 2.0) * 264.0 / 256.0);
     EXPECT_NEAR(floor_pixel(*gl_, camera, 32, 64).r, texture.r * stored / 255.0 * 2.0, 2.0);
+}
+
+// A changed lightmap goes to a texture of the ring (classic::kLightmapRing) that the last frames
+// did not draw with: writing a texture the GPU may still be reading makes the driver wait for
+// those frames. Every texture of the ring catches up on what changed while it was not current,
+// and the world and brush-entity passes of one frame draw with the same texture.
+TEST_F(ClassicWorldTest, ChangedLightmapsGoToATextureTheLastFramesDidNotDrawWith) {
+    BrushBuilder builder;
+    const int orange = builder.add_texture("floor", 16, 16, uniform_image(16, colour::kOrange));
+    BrushBuilder::Quad a{0, 0, 64, 128, 0, orange};
+    a.styles = {3, 255, 255, 255};
+    a.light = {100, 0, 0, 0};
+    BrushBuilder::Quad b{64, 0, 128, 128, 0, orange};
+    b.styles = {4, 255, 255, 255};
+    b.light = {100, 0, 0, 0};
+    builder.add_floor(a);  // surface 0: the world, style 3
+    builder.add_floor(b);  // surface 1: "*1", style 4
+    builder.build();
+    nqr_model world_model = builder.model(1, 0, 1);
+    nqr_model door_model = builder.model(2, 1, 1, "*1");
+    renderer_.register_model(&world_model);
+    renderer_.register_model(&door_model);
+    nqr_entity door = make_entity(2, glm::mat4(1.0f));
+    TestFrame frame;
+    frame.brush.push_back(&door);
+    const nqr_camera camera = floor_camera();
+    const auto& world = *renderer_.models().find(1)->brush;
+    const Rgb texture = colour(colour::kOrange);
+
+    std::vector<GLuint> drawn_with;
+    auto draw_and_check = [&](float style3, float style4) {
+        frame.lightstyles[3] = style3;
+        frame.lightstyles[4] = style4;
+        gl_->clear({});
+        const nqr_frame* f = frame.build(camera, 1, 0.0);
+        renderer_.draw_world(f);
+        const GLuint world_pass = world.lightmap_texture();
+        renderer_.draw_brush_entities(f);
+        EXPECT_EQ(world.lightmap_texture(), world_pass) << "the brush pass changed texture";
+        drawn_with.push_back(world_pass);
+        EXPECT_TRUE(near(floor_pixel(*gl_, camera, 32, 64), lit(texture, 100, style3), 2))
+            << "style 3 at " << style3;
+        EXPECT_TRUE(near(floor_pixel(*gl_, camera, 96, 64), lit(texture, 100, style4), 2))
+            << "style 4 at " << style4;
+    };
+    draw_and_check(1.0f, 1.0f);
+    // Both surfaces change in each of these frames (one in the world pass, one in the brush
+    // pass): one new texture per frame, none of the previous kLightmapRing - 1 frames' textures.
+    for (int i = 1; i <= 2 * classic::kLightmapRing; ++i) {
+        draw_and_check(1.0f + 0.1f * i, 1.0f - 0.05f * i);
+        const size_t now = drawn_with.size() - 1;
+        for (size_t back = 1; back < classic::kLightmapRing && back <= now; ++back) {
+            EXPECT_NE(drawn_with[now], drawn_with[now - back]) << "frame " << now;
+        }
+    }
+    // Nothing changes: the texture stays. Then only style 3 changes, for kLightmapRing frames:
+    // each texture that comes round must still hold style 4's last value.
+    draw_and_check(2.0f, 0.5f);
+    const GLuint settled = drawn_with.back();
+    draw_and_check(2.0f, 0.5f);
+    EXPECT_EQ(drawn_with.back(), settled);
+    for (int i = 1; i <= classic::kLightmapRing; ++i) draw_and_check(2.0f - 0.2f * i, 0.5f);
 }
 
 TEST_F(ClassicWorldTest, FullbrightPixelsStayBrightWithoutLight) {
