@@ -145,6 +145,11 @@ FrameStatus DemoSession::frame(double frame_time, const MoveCommand* cmd) {
 }
 
 bool DemoSession::on_new_level() {
+    if (level_.holds(client_->model_names())) {
+        level_.reattach(*client_);
+        if (callbacks_.level_restarted) callbacks_.level_restarted(level_);
+        return true;
+    }
     if (level_.loaded() && callbacks_.level_unloading) callbacks_.level_unloading();
     auto loaded = level_.load(*client_);
     for (const auto& w : level_.take_warnings()) callbacks_.print("warning: " + w);

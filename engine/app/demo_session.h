@@ -19,6 +19,7 @@ class Vfs;
 struct DemoSessionCallbacks {
     std::function<void()> level_unloading;        // models are about to be freed
     std::function<void(Level&)> level_loaded;     // register the new models
+    std::function<void(Level&)> level_restarted;  // the same map again: models kept
     std::function<void(std::string_view)> print;  // console text, warnings
     std::function<void(std::string_view)> center_print;
     std::function<void(std::string_view)> stuff_text;  // commands the server sent

@@ -193,6 +193,7 @@ bool Engine::start() {
     };
     callbacks.level_unloading = [this] { release_level_models(); };
     callbacks.level_loaded = [this](Level& level) { register_level_models(level); };
+    callbacks.level_restarted = [this](Level& level) { level_restarted(level); };
     demo_ = std::make_unique<DemoSession>(vfs_ ? &*vfs_ : nullptr, std::move(callbacks));
     demo_->level().set_palette(palette);  // surface colours for the ambient cube field
     demo_->set_user_dir(user_dir() + "/" + options_.game.value_or("id1"));

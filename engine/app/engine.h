@@ -134,6 +134,7 @@ class Engine {
 
     // engine_models.cpp
     void register_level_models(Level& level);
+    void level_restarted(Level& level);
     void release_level_models();
     void show_showroom(bool on);
 

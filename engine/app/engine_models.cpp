@@ -17,6 +17,16 @@ void Engine::register_level_models(Level& level) {
     }
 }
 
+// The renderer keeps the models it has; only what belongs to the view starts afresh.
+void Engine::level_restarted(Level& level) {
+    if (!level_models_registered_) return register_level_models(level);
+    view_state_ = {};
+    if (const Cvar* developer = host_.cvars().find("developer"); developer && developer->value()) {
+        print("map restarted: the level and its " + std::to_string(level.models().models().size()) +
+              " models kept");
+    }
+}
+
 void Engine::release_level_models() {
     if (!level_models_registered_) return;
     dispatch_->clear_models();

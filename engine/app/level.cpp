@@ -1,5 +1,6 @@
 #include "app/level.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "client/model_info.h"
@@ -25,6 +26,8 @@ void Level::clear() {
     lights_.reset();
     ambient_.reset();
     ids_.clear();
+    model_names_.clear();
+    model_info_.clear();
     world_ = nullptr;
     cache_.clear();
 }
@@ -46,6 +49,8 @@ Result<bool> Level::load(ClientState& client) {
         ids_[i] = i == 1 ? world.value() : cache_.load(names[i]);
         info[i] = client_model_info(cache_.get(ids_[i]));
     }
+    model_names_.assign(names.begin(), names.end());
+    model_info_ = info;
     client.set_model_info(std::move(info));
 
     const BrushModelData* data = world_->brush_data();
@@ -72,6 +77,11 @@ void Level::bake_ambient_field(const BrushModelData& data) {
         AmbientCubeField::bake(data.bsp(), data.lighting_rgb(), reflectivity));
     ambient_bake_seconds_ =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool Level::holds(std::span<const std::string> model_names) const {
+    return loaded() && std::equal(model_names.begin(), model_names.end(), model_names_.begin(),
+                                  model_names_.end());
 }
 
 nqr_model_id Level::model_id(int index) const {

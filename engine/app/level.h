@@ -28,6 +28,11 @@ class Level {
     // colours from `palette` (set_palette; without one every surface reflects half).
     Result<bool> load(ClientState& client);
     void clear();
+    // A server restarting the same map (a new serverinfo naming the same models, as Quake's
+    // `restart` and a changelevel to the same map send): the loaded level serves again, and
+    // only the client's model info is set anew.
+    bool holds(std::span<const std::string> model_names) const;
+    void reattach(ClientState& client) const { client.set_model_info(model_info_); }
     void set_palette(const PaletteBytes& palette) { palette_ = palette; }
 
     bool loaded() const { return world_ != nullptr; }
@@ -50,6 +55,8 @@ class Level {
     ModelCache cache_;
     const RenderModel* world_ = nullptr;
     std::vector<nqr_model_id> ids_;  // by precache index
+    std::vector<std::string> model_names_;
+    std::vector<ModelInfo> model_info_;
     std::unique_ptr<WorldCuller> culler_;
     std::unique_ptr<OccluderMesh> occluders_;
     std::unique_ptr<OcclusionCuller> occlusion_;
