@@ -39,6 +39,7 @@ WorldCuller::WorldCuller(const Bsp& bsp) : bsp_(bsp) {
     face_mark_.assign(bsp.faces.size(), 0);
     pvs_row_.assign(pvs_row_bytes(bsp), 0);
     bucket_start_.assign(bsp.textures.size() + 2, 0);
+    bucket_rank_.assign(bsp.textures.size() + 1, kUnranked);
     face_texture_.resize(bsp.faces.size());
     const auto no_texture = static_cast<uint32_t>(bsp.textures.size());
     for (size_t f = 0; f < bsp.faces.size(); ++f) {
@@ -122,7 +123,7 @@ uint32_t WorldCuller::cull(const glm::vec3& eye, const Frustum& frustum, std::sp
         mark_pvs_leafs(eye_leaf_);
     }
     walk(bsp_.models[0].headnodes[0], eye, frustum, 0);
-    return sort_by_texture(out);
+    return group_by_texture(out);
 }
 
 void WorldCuller::walk(int32_t node, const glm::vec3& eye, const Frustum& frustum, int depth) {
@@ -156,14 +157,22 @@ void WorldCuller::visit_leaf(uint32_t leaf, const Frustum& frustum) {
     }
 }
 
-uint32_t WorldCuller::sort_by_texture(std::span<uint32_t> out) {
-    // Counting sort: bucket_start_[b + 1] counts bucket b, then prefix sums give the starts.
+// Faces grouped by texture (one draw call each), the groups in the order of their nearest face
+// and each group in walk order, so the frame draws roughly front to back and depth testing can
+// skip shading what is hidden. A counting sort over the groups' ranks keeps the walk order.
+uint32_t WorldCuller::group_by_texture(std::span<uint32_t> out) {
+    std::fill(bucket_rank_.begin(), bucket_rank_.end(), kUnranked);
     std::fill(bucket_start_.begin(), bucket_start_.end(), 0);
-    for (uint32_t i = 0; i < scratch_count_; ++i) ++bucket_start_[face_texture_[scratch_[i]] + 1];
-    for (size_t b = 1; b < bucket_start_.size(); ++b) bucket_start_[b] += bucket_start_[b - 1];
+    uint32_t ranks = 0;
+    for (uint32_t i = 0; i < scratch_count_; ++i) {
+        uint32_t& rank = bucket_rank_[face_texture_[scratch_[i]]];
+        if (rank == kUnranked) rank = ranks++;
+        ++bucket_start_[rank + 1];
+    }
+    for (uint32_t b = 1; b <= ranks; ++b) bucket_start_[b] += bucket_start_[b - 1];
     for (uint32_t i = 0; i < scratch_count_; ++i) {
         const uint32_t face = scratch_[i];
-        const uint32_t at = bucket_start_[face_texture_[face]]++;
+        const uint32_t at = bucket_start_[bucket_rank_[face_texture_[face]]]++;
         if (at < out.size()) out[at] = face;
     }
     return static_cast<uint32_t>(std::min<size_t>(scratch_count_, out.size()));

@@ -3,8 +3,9 @@
 // Each cull(): find the eye's leaf, decompress its PVS row, mark the visible leafs and their
 // ancestor nodes, then walk the node tree from the root, front to back, skipping unmarked nodes
 // and nodes/leafs whose boxes lie outside the frustum; every surface listed by a visited leaf
-// is visible. The list comes out grouped by texture (ascending texture index; surfaces without
-// a texture last), front to back within a texture.
+// is visible. The list comes out grouped by texture, the groups ordered by their nearest surface
+// and front to back within a group, so a renderer drawing it in order draws roughly front to
+// back.
 //
 // Without vis data, or with the eye in solid or outside the map (leaf 0), every world leaf
 // counts as potentially visible, as in Quake; the frustum still culls. Surfaces are not culled
@@ -51,6 +52,7 @@ class WorldCuller {
 
   private:
     static constexpr int32_t kNoParent = -1;
+    static constexpr uint32_t kUnranked = ~0u;
 
     void build_parents(int32_t node, int32_t parent, int depth);
     void next_frame();
@@ -59,7 +61,7 @@ class WorldCuller {
     void mark_leaf(uint32_t leaf);
     void walk(int32_t node, const glm::vec3& eye, const Frustum& frustum, int depth);
     void visit_leaf(uint32_t leaf, const Frustum& frustum);
-    uint32_t sort_by_texture(std::span<uint32_t> out);
+    uint32_t group_by_texture(std::span<uint32_t> out);
     bool box_touches_visible(int32_t node, const glm::vec3& mins, const glm::vec3& maxs,
                              int depth) const;
 
@@ -77,7 +79,8 @@ class WorldCuller {
     std::vector<uint8_t> pvs_row_;
     std::vector<uint32_t> scratch_;  // visible faces in walk order
     uint32_t scratch_count_ = 0;
-    std::vector<uint32_t> bucket_start_;
+    std::vector<uint32_t> bucket_start_;  // per rank
+    std::vector<uint32_t> bucket_rank_;   // per texture: its rank this frame, kUnranked none
     uint32_t eye_leaf_ = 0;
     uint32_t pvs_leafs_ = 0;
     uint32_t drawn_leafs_ = 0;

@@ -6,6 +6,7 @@ namespace nq::npr::classic {
 
 void SurfaceBatches::resize(size_t num_surfaces, size_t num_texture_slots) {
     head_.assign(num_texture_slots, -1);
+    tail_.assign(num_texture_slots, -1);
     next_.assign(num_surfaces, -1);
     seen_.assign(num_surfaces, 0);
     touched_.assign(num_texture_slots, 0);
@@ -30,9 +31,15 @@ void SurfaceBatches::add(uint32_t surface, uint32_t texture_slot) {
     if (surface >= seen_.size() || texture_slot >= head_.size()) return;
     if (seen_[surface] == generation_) return;
     seen_[surface] = generation_;
-    if (head_[texture_slot] < 0) touched_[touched_count_++] = texture_slot;
-    next_[surface] = head_[texture_slot];
-    head_[texture_slot] = static_cast<int32_t>(surface);
+    const auto index = static_cast<int32_t>(surface);
+    next_[surface] = -1;
+    if (head_[texture_slot] < 0) {
+        touched_[touched_count_++] = texture_slot;
+        head_[texture_slot] = index;
+    } else {
+        next_[static_cast<size_t>(tail_[texture_slot])] = index;
+    }
+    tail_[texture_slot] = index;
 }
 
 void SurfaceBatches::finish(const std::vector<BrushSurfaceMesh>& surfaces) {

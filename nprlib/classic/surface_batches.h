@@ -24,7 +24,9 @@ class SurfaceBatches {
     void resize(size_t num_surfaces, size_t num_texture_slots);
 
     void begin();
-    // Adds a surface once per frame (repeats are ignored) to its texture's batch.
+    // Adds a surface once per frame (repeats are ignored) to the end of its texture's batch: a
+    // batch keeps the order its surfaces came in (the engine's list is front to back, which
+    // lets depth testing skip the shading of what is hidden).
     void add(uint32_t surface, uint32_t texture_slot);
     void finish(const std::vector<BrushSurfaceMesh>& surfaces);
 
@@ -33,8 +35,9 @@ class SurfaceBatches {
     const void* const* offsets() const { return offsets_.data(); }
 
   private:
-    std::vector<int32_t> head_;   // per texture slot: last surface added, -1 none
-    std::vector<int32_t> next_;   // per surface: previous surface of the same slot
+    std::vector<int32_t> head_;   // per texture slot: first surface added, -1 none
+    std::vector<int32_t> tail_;   // per texture slot: last surface added
+    std::vector<int32_t> next_;   // per surface: the next one added with the same slot
     std::vector<uint32_t> seen_;  // per surface: generation it was added in
     std::vector<uint32_t> touched_;
     size_t touched_count_ = 0;

@@ -7,6 +7,7 @@
 
 #include "classic/classic_renderer.h"
 #include "classic/lightmap_atlas.h"
+#include "classic/surface_batches.h"
 #include "nprlib_test_support.h"
 
 namespace nq::npr::test {
@@ -528,3 +529,36 @@ TEST_F(ClassicWorldTest, BadModelIsSkippedWithALogLine) {
 
 }  // namespace
 }  // namespace nq::npr::test
+
+// Batches keep the order surfaces were added in (the engine lists them front to back), within a
+// texture and across textures; a repeat is ignored.
+TEST(ClassicSurfaceBatches, KeepTheOrderSurfacesCameIn) {
+    using nq::npr::classic::BrushSurfaceMesh;
+    using nq::npr::classic::SurfaceBatches;
+    std::vector<BrushSurfaceMesh> surfaces(8);
+    for (uint32_t s = 0; s < surfaces.size(); ++s) surfaces[s] = {100 * s, 3 + s};
+    SurfaceBatches batches;
+    batches.resize(surfaces.size(), 2);
+    for (int frame = 0; frame < 2; ++frame) {  // the second frame reuses the arrays
+        batches.begin();
+        const uint32_t added[][2] = {{5, 1}, {2, 0}, {7, 1}, {5, 1}, {3, 0}, {1, 1}};
+        for (const auto& [surface, slot] : added) batches.add(surface, slot);
+        batches.finish(surfaces);
+        ASSERT_EQ(batches.batches().size(), 2u);
+        const nq::npr::classic::SurfaceBatch first = batches.batches()[0];
+        const nq::npr::classic::SurfaceBatch second = batches.batches()[1];
+        EXPECT_EQ(first.texture_slot, 1u);
+        EXPECT_EQ(second.texture_slot, 0u);
+        auto surface_at = [&](uint32_t i) {
+            return static_cast<uint32_t>(reinterpret_cast<uintptr_t>(batches.offsets()[i]) / 400);
+        };
+        ASSERT_EQ(first.count, 3u);
+        EXPECT_EQ(surface_at(first.first), 5u);
+        EXPECT_EQ(surface_at(first.first + 1), 7u);
+        EXPECT_EQ(surface_at(first.first + 2), 1u);
+        EXPECT_EQ(batches.counts()[first.first + 2], 4);
+        ASSERT_EQ(second.count, 2u);
+        EXPECT_EQ(surface_at(second.first), 2u);
+        EXPECT_EQ(surface_at(second.first + 1), 3u);
+    }
+}

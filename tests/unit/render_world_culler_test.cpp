@@ -1,8 +1,8 @@
 // World culling on the LibreQuake maps: from start.bsp's player start the visible list is
-// non-empty, smaller than the world, holds the floor under the player, is sorted by texture,
-// equals the brute-force PVS set without a frustum and lies within it with one; maps without
-// vis data and eyes outside the map see everything; and after warm-up cull() allocates nothing
-// (counted by replacing the global operator new in this test binary).
+// non-empty, smaller than the world, holds the floor under the player, is grouped by texture in
+// front-to-back order, equals the brute-force PVS set without a frustum and lies within it with
+// one; maps without vis data and eyes outside the map see everything; and after warm-up cull()
+// allocates nothing (counted by replacing the global operator new in this test binary).
 #include <gtest/gtest.h>
 
 #include <set>
@@ -58,16 +58,24 @@ std::vector<uint32_t> cull(WorldCuller& culler, const glm::vec3& eye, const Frus
     return out;
 }
 
-// Every surface listed by a leaf that the parser's own PVS decoder marks visible from `eye`
-// (all world leafs when the eye's leaf has no row or is leaf 0).
-std::set<uint32_t> brute_force_pvs_surfaces(const Bsp& bsp, const glm::vec3& eye) {
+// The world leafs the parser's own PVS decoder marks visible from `eye` (all of them when the
+// eye's leaf has no row or is leaf 0).
+std::set<uint32_t> brute_force_pvs_leafs(const Bsp& bsp, const glm::vec3& eye) {
     const uint32_t leaf = leaf_at(bsp, {eye.x, eye.y, eye.z});
     const bool all = leaf == 0 || bsp.leafs[leaf].vis_offset < 0;
     const std::vector<uint8_t> row = decompress_vis(bsp, leaf);
+    std::set<uint32_t> leafs;
+    for (uint32_t l = 1; l <= bsp.models[0].visleafs; ++l) {
+        if (all || pvs_contains(row, l)) leafs.insert(l);
+    }
+    return leafs;
+}
+
+// Every world surface listed by one of those leafs.
+std::set<uint32_t> brute_force_pvs_surfaces(const Bsp& bsp, const glm::vec3& eye) {
     std::set<uint32_t> faces;
     const BspModel& world = bsp.models[0];
-    for (uint32_t l = 1; l <= world.visleafs; ++l) {
-        if (!all && !pvs_contains(row, l)) continue;
+    for (uint32_t l : brute_force_pvs_leafs(bsp, eye)) {
         const BspLeaf& bl = bsp.leafs[l];
         for (uint32_t i = 0; i < bl.num_marksurfaces; ++i) {
             const uint32_t f = bsp.marksurfaces[bl.first_marksurface + i];
@@ -125,11 +133,70 @@ TEST(RenderWorldCuller, StartMapFromThePlayerStart) {
     const std::set<uint32_t> pvs = brute_force_pvs_surfaces(map.bsp(), eye);
     for (uint32_t f : visible) EXPECT_TRUE(pvs.count(f)) << "surface " << f << " not in the PVS";
 
-    // Grouped by texture, ascending.
+    // Each texture's surfaces together, in one run.
     const nqr_brush_model& brush = map.data->abi();
+    auto texture_of = [&](uint32_t f) { return nqr_at(nqr_surface, brush.surfaces, f)->texture; };
+    std::set<uint32_t> finished;
     for (size_t i = 1; i < visible.size(); ++i) {
-        EXPECT_LE(nqr_at(nqr_surface, brush.surfaces, visible[i - 1])->texture,
-                  nqr_at(nqr_surface, brush.surfaces, visible[i])->texture);
+        if (texture_of(visible[i]) == texture_of(visible[i - 1])) continue;
+        EXPECT_TRUE(finished.insert(texture_of(visible[i - 1])).second);
+        EXPECT_FALSE(finished.count(texture_of(visible[i]))) << "texture split at " << i;
+    }
+}
+
+// The BSP tree's front-to-back order from `eye`: near child first at every node, each world
+// surface of a PVS leaf at its first sight.
+void walk_front_to_back(const Bsp& bsp, int32_t node, const glm::vec3& eye,
+                        const std::set<uint32_t>& pvs_leafs, std::vector<uint32_t>& order,
+                        std::set<uint32_t>& seen) {
+    if (node < 0) {
+        const auto l = static_cast<uint32_t>(-(node + 1));
+        if (!pvs_leafs.count(l)) return;
+        const BspLeaf& leaf = bsp.leafs[l];
+        const BspModel& world = bsp.models[0];
+        for (uint32_t i = 0; i < leaf.num_marksurfaces; ++i) {
+            const uint32_t f = bsp.marksurfaces[leaf.first_marksurface + i];
+            const bool in_world = f >= world.first_face && f < world.first_face + world.num_faces;
+            if (in_world && seen.insert(f).second) order.push_back(f);
+        }
+        return;
+    }
+    const BspNode& n = bsp.nodes[static_cast<size_t>(node)];
+    const BspPlane& p = bsp.planes[n.plane];
+    const float d = p.normal[0] * eye.x + p.normal[1] * eye.y + p.normal[2] * eye.z - p.dist;
+    const int near = d >= 0 ? 0 : 1;
+    walk_front_to_back(bsp, n.children[near], eye, pvs_leafs, order, seen);
+    walk_front_to_back(bsp, n.children[near ^ 1], eye, pvs_leafs, order, seen);
+}
+
+// The list is that order grouped by texture, the groups in the order of their nearest surface:
+// drawn in order, the frame goes roughly front to back and depth testing skips hidden shading.
+TEST(RenderWorldCuller, SurfacesComeFrontToBackGroupedByTexture) {
+    const MapFixture map = load("maps/start.bsp");
+    const glm::vec3 eye = map.player_start() + glm::vec3(0, 0, 22);
+    WorldCuller culler(map.bsp());
+    const std::vector<uint32_t> visible = cull(culler, eye, Frustum{});
+    std::vector<uint32_t> walk;
+    std::set<uint32_t> seen;
+    walk_front_to_back(map.bsp(), map.bsp().models[0].headnodes[0], eye,
+                       brute_force_pvs_leafs(map.bsp(), eye), walk, seen);
+    ASSERT_EQ(walk.size(), visible.size());
+
+    const nqr_brush_model& brush = map.data->abi();
+    auto texture_of = [&](uint32_t f) { return nqr_at(nqr_surface, brush.surfaces, f)->texture; };
+    std::vector<uint32_t> expected;
+    std::set<uint32_t> grouped;
+    for (uint32_t first : walk) {
+        if (!grouped.insert(texture_of(first)).second) continue;
+        for (uint32_t f : walk) {
+            if (texture_of(f) == texture_of(first)) expected.push_back(f);
+        }
+    }
+    ASSERT_EQ(visible.size(), expected.size());
+    for (size_t i = 0; i < visible.size(); ++i) {
+        ASSERT_EQ(visible[i], expected[i]) << "at " << i << " of " << visible.size() << ", texture "
+                                           << texture_of(visible[i]) << " vs "
+                                           << texture_of(expected[i]);
     }
 }
 
