@@ -134,6 +134,9 @@ class Engine {
 
     // engine_models.cpp
     void register_level_models(Level& level);
+    // Draws the level's warm-up frame (SceneBuilder::build_warm_up) and waits for it, so the
+    // driver's first-use costs land at load; the next frame clears it before anything shows.
+    void warm_up_renderer(Level& level);
     void level_restarted(Level& level);
     void release_level_models();
     void show_showroom(bool on);

@@ -122,6 +122,7 @@ void Engine::swap_plugin(const std::string& name) {
     }
     host_.cvars().set(*cvars_.r_plugin, name);
     print("renderer: " + plugins_->active_name());
+    if (level_models_registered_) warm_up_renderer(demo_->level());
 }
 
 void Engine::start_demo(const std::string& name, DemoMode mode) {

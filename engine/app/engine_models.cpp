@@ -1,6 +1,8 @@
 // Which models the renderer holds: a demo's level or the showroom, never both.
 #include "app/engine.h"
 
+#include <epoxy/gl.h>
+
 namespace nq {
 
 void Engine::register_level_models(Level& level) {
@@ -8,6 +10,7 @@ void Engine::register_level_models(Level& level) {
     scene_.bind_level(level);
     for (const auto& model : level.models().models()) dispatch_->register_model(model->abi());
     level_models_registered_ = true;
+    warm_up_renderer(level);
     view_state_ = {};
     if (const Cvar* developer = host_.cvars().find("developer"); developer && developer->value()) {
         const AmbientCubeField* field = level.ambient_field();
@@ -15,6 +18,18 @@ void Engine::register_level_models(Level& level) {
               " samples baked in " + std::to_string(int(level.ambient_bake_seconds() * 1000.0)) +
               " ms");
     }
+}
+
+void Engine::warm_up_renderer(Level& level) {
+    if (!level.loaded()) return;
+    CameraSetup camera;
+    camera.fov_x = cvars_.fov->value();
+    camera.viewport[2] = window_->drawable_width();
+    camera.viewport[3] = window_->drawable_height();
+    glViewport(0, 0, camera.viewport[2], camera.viewport[3]);
+    dispatch_->set_obscurance(obscurance_cvars_.settings());
+    dispatch_->draw(scene_.build_warm_up(level, camera));
+    glFinish();
 }
 
 // The renderer keeps the models it has; only what belongs to the view starts afresh.

@@ -314,4 +314,42 @@ const nqr_frame& SceneBuilder::finish_custom() {
     return frame_;
 }
 
+const nqr_frame& SceneBuilder::build_warm_up(Level& level, const CameraSetup& camera) {
+    // Numbers no server entity uses, so plugins' per-entity state does not mix them up.
+    constexpr uint32_t kFirstWarmUpNumber = 0x7fff0000u;
+    // Quake counts every world leaf visible from outside the map; no frustum culls here.
+    const glm::vec3 outside_any_map(1.0e6f, 1.0e6f, 1.0e6f);
+    nqr_frame& frame = begin_custom(camera, 0.0, 0.0, 0.0f);
+    if (const RenderModel* world = level.models().world(); world && level.culler()) {
+        frame.world = world->id();
+        frame.num_visible_surfaces =
+            level.culler()->cull(outside_any_map, Frustum{}, visible_surfaces_);
+    }
+    const glm::mat4 view = load_matrix(frame.camera.view);
+    const glm::vec3 forward = -glm::vec3(view[0][2], view[1][2], view[2][2]);
+    const glm::vec3 ahead = camera.origin + forward * 64.0f;
+    uint32_t number = kFirstWarmUpNumber;
+    for (const auto& model : level.models().models()) {
+        const uint32_t kind = model->kind();
+        if (kind != NQR_MODEL_ALIAS && kind != NQR_MODEL_SPRITE) continue;
+        nqr_entity& e = add_custom_entity(kind);
+        e.model = model->id();
+        e.number = number++;
+        e.origin[0] = ahead.x;
+        e.origin[1] = ahead.y;
+        e.origin[2] = ahead.z;
+        e.scale = 1;
+        e.alpha = 1;
+        fill_entity_transform(kind, frame.camera, e);
+        e.light.ambient = 1;
+        for (auto& face : e.light.ambient_cube) face[0] = face[1] = face[2] = 1;
+        e.light.color[0] = e.light.color[1] = e.light.color[2] = 1;
+    }
+    particles_[0] = nqr_particle{sizeof(nqr_particle), {ahead.x, ahead.y, ahead.z}, 15, {}, 1};
+    frame.num_particles = 1;
+    dlights_[0] = nqr_dlight{sizeof(nqr_dlight), {ahead.x, ahead.y, ahead.z}, 200, {1, 1, 1}};
+    frame.num_dlights = 1;
+    return finish_custom();
+}
+
 }  // namespace nq

@@ -50,6 +50,13 @@ class SceneBuilder {
     nqr_entity& add_custom_entity(uint32_t kind);  // appended and listed under its kind
     const nqr_frame& finish_custom();
 
+    // A frame that draws once everything the level can show: every world surface, one entity
+    // of each alias and sprite model in front of the camera, a particle and a dynamic light.
+    // Drawn (and then cleared) when a level or a renderer arrives, it makes the driver pay its
+    // first-use costs (Mesa compiles a shader variant the first time a program draws with a
+    // new texture or blend state) then, not in the frame where the first rocket explodes.
+    const nqr_frame& build_warm_up(Level& level, const CameraSetup& camera);
+
     // Whether entities hidden behind the world are flagged NQR_ENTITY_OCCLUDED (r_occlusion).
     void set_occlusion_culling(bool enabled) { occlusion_enabled_ = enabled; }
 

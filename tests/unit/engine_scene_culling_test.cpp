@@ -2,7 +2,7 @@
 // sphere or the box of this frame's two poses, placed, lies outside the view. Checked against
 // the entities' real vertices over both demos: a flagged entity has every vertex of its blended
 // pose behind one side plane (nothing of it can be on screen), and the pose boxes flag
-// entities the spheres alone keep.
+// entities the spheres alone keep. The warm-up frame holds everything the level can show.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -93,6 +93,45 @@ TEST(EngineSceneCulling, FlaggedEntitiesHaveNothingInViewAndPoseBoxesCullMore) {
             "%s: %zu alias entities, %zu flagged outside the view, %zu by the pose box only\n",
             demo.c_str(), r.alias_entities, r.flagged, r.flagged_by_pose_only);
     }
+}
+
+// The warm-up frame drawn at level load holds everything the level can show: every world
+// surface (the BSP's own face count), one entity per alias and sprite model the level loaded
+// (counted by file name), each in front of the camera, a particle and a dynamic light.
+TEST(EngineSceneCulling, WarmUpFrameHoldsEveryWorldSurfaceAndOneEntityPerModel) {
+    Vfs vfs = test::mount_lq1();
+    test::DemoReplay replay(vfs, "demo.dem");
+    uint64_t frame = 1;
+    while (!replay.play_to(frame) && replay.frames() >= frame) ++frame;
+    ASSERT_TRUE(replay.level().loaded());
+    size_t mdl = 0, spr = 0;
+    for (const auto& model : replay.level().models().models()) {
+        const std::string& name = model->name();
+        if (name.size() > 4 && name.compare(name.size() - 4, 4, ".mdl") == 0) ++mdl;
+        if (name.size() > 4 && name.compare(name.size() - 4, 4, ".spr") == 0) ++spr;
+    }
+    ASSERT_GT(mdl, 10u);
+    ASSERT_GT(spr, 0u);
+
+    SceneBuilder scene;
+    scene.bind_level(replay.level());
+    CameraSetup camera;
+    camera.origin = {100, -50, 30};
+    camera.angles = {10, 135, 0};
+    const nqr_frame& f = scene.build_warm_up(replay.level(), camera);
+    EXPECT_EQ(f.world, replay.level().models().world()->id());
+    EXPECT_EQ(f.num_visible_surfaces, replay.level().world_bsp()->models[0].num_faces);
+    EXPECT_EQ(f.num_alias_entities, mdl);
+    EXPECT_EQ(f.num_sprite_entities, spr);
+    const Frustum frustum =
+        Frustum::sides_from_view_projection(load_matrix(f.camera.view_projection));
+    for (uint32_t i = 0; i < f.num_alias_entities; ++i) {
+        const nqr_entity& e = *f.alias_entities[i];
+        EXPECT_FALSE(frustum.sphere_outside(glm::vec3(e.origin[0], e.origin[1], e.origin[2]), 1));
+        EXPECT_EQ(e.flags & (NQR_ENTITY_OUTSIDE_VIEW | NQR_ENTITY_OCCLUDED), 0u);
+    }
+    EXPECT_EQ(f.num_particles, 1u);
+    EXPECT_EQ(f.num_dlights, 1u);
 }
 
 }  // namespace
