@@ -398,7 +398,9 @@ typedef struct nqr_frame {
     nqr_camera camera;
 
     nqr_model_id world; /* 0 when no map is loaded (showroom without world) */
-    /* World surfaces that survived PVS and frustum culling this frame, sorted by texture. */
+    /* World surfaces that survived PVS and frustum culling this frame, grouped by texture: the
+     * groups in the order of their nearest surface, each front to back (BSP order), so drawing
+     * them in order lets depth testing skip hidden shading. */
     const uint32_t* visible_surfaces;
     uint32_t num_visible_surfaces;
     /* Light style intensities, 64 entries, 1.0 = normal ('m'); lightmap samples of style s
