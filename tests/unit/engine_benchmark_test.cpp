@@ -163,7 +163,9 @@ TEST(EngineBenchmark, TraceExplainsEveryCountedFrame) {
     EXPECT_LE(mismatched, frames / 100) << "frames whose stages do not add up to their time";
     EXPECT_EQ(with_world, frames);
     EXPECT_GT(with_entities, frames / 2);
-    if (gpu_timed) EXPECT_EQ(with_gpu, frames);
+    if (gpu_timed) {
+        EXPECT_EQ(with_gpu, frames);
+    }
 }
 
 TEST(EngineBenchmark, FailedBenchmarkExitsNonZeroAndLogsNoFigure) {

@@ -84,8 +84,9 @@ TEST(EngineStartup, QuakeRcRunsTheConfigsThenTheCommandLineThenTheDemoLoop) {
             EXPECT_GT(position_of(r.out, warning), plus);
         }
     }
-    if (present > 0)
+    if (present > 0) {
         EXPECT_NE(r.out.find(std::to_string(present) + " demo(s) in loop"), std::string::npos);
+    }
     // +quit came first: the loop was set but never started.
     EXPECT_EQ(r.out.find("FITZQUAKE"), std::string::npos) << "a demo started after +quit";
 }

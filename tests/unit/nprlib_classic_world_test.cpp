@@ -536,7 +536,10 @@ TEST(ClassicSurfaceBatches, KeepTheOrderSurfacesCameIn) {
     using nq::npr::classic::BrushSurfaceMesh;
     using nq::npr::classic::SurfaceBatches;
     std::vector<BrushSurfaceMesh> surfaces(8);
-    for (uint32_t s = 0; s < surfaces.size(); ++s) surfaces[s] = {100 * s, 3 + s};
+    for (uint32_t s = 0; s < surfaces.size(); ++s) {
+        surfaces[s].first_index = 100 * s;
+        surfaces[s].index_count = 3 + s;
+    }
     SurfaceBatches batches;
     batches.resize(surfaces.size(), 2);
     for (int frame = 0; frame < 2; ++frame) {  // the second frame reuses the arrays

@@ -31,6 +31,12 @@ void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
     ++nq::render_test::g_allocations;
     return std::malloc(n ? n : 1);
 }
+// GCC 12 inlines these replacements where a `new` expression's pointer is deleted and then
+// reports free() on memory from operator new; here both sides are malloc/free by design.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 void operator delete(void* p) noexcept {
     std::free(p);
 }
@@ -43,3 +49,6 @@ void operator delete(void* p, std::size_t) noexcept {
 void operator delete[](void* p, std::size_t) noexcept {
     std::free(p);
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
