@@ -43,7 +43,7 @@ extern "C" {
 #endif
 
 #define NQR_ABI_VERSION_MAJOR 1u
-#define NQR_ABI_VERSION_MINOR 4u
+#define NQR_ABI_VERSION_MINOR 5u
 #define NQR_ABI_VERSION ((NQR_ABI_VERSION_MAJOR << 16) | NQR_ABI_VERSION_MINOR)
 #define NQR_ABI_MAJOR(v) ((uint32_t)(v) >> 16)
 #define NQR_ENTRY_POINT "nqr_get_renderer"
@@ -372,7 +372,10 @@ typedef struct nqr_particle {
 } nqr_particle;
 
 /* Colour, depth and normals of the rendered scene, for post-processing plugins. GL texture
- * names of the engine's scene framebuffer; normals are view-space, encoded n * 0.5 + 0.5. */
+ * names of the engine's scene framebuffer; normals are view-space, encoded n * 0.5 + 0.5.
+ * The normal's alpha is the share of the pixel's colour that ambient obscurance darkens: 1 for
+ * all of it, 0 for what is not solid (sky, liquids); since 1.5 a style that keeps ambient light
+ * apart writes ambient / total there (by luminance), so obscurance shades only that part. */
 typedef struct nqr_gbuffer {
     uint32_t size;
     uint32_t framebuffer;

@@ -25,7 +25,8 @@ void ObscuranceCvars::register_cvars(CvarRegistry& cvars,
         {"vo_mode",
          std::string(npr::obscurance::obscurance_mode_name(d.mode)),
          kCvarArchive,
-         "sampling: lines5, lines9 (Loos & Sloan line samples), points12, points33",
+         "sampling: lines5, lines9 (Loos & Sloan line samples), points12, points33, area1 "
+         "(one area sample), reference (converged lines, slow)",
          {},
          {}});
     cvars_[radius] = number("vo_radius", "24", 1.0f, 512.0f, "sphere radius in world units");
@@ -39,7 +40,8 @@ void ObscuranceCvars::register_cvars(CvarRegistry& cvars,
         flag("vo_normal", d.normal_clamp, "clamp each sample by the surface's tangent plane");
     cvars_[blur] = flag("vo_blur", d.blur, "edge-aware (depth and normal) blur");
     cvars_[half] = flag("vo_half", d.half_resolution, "compute at half resolution");
-    cvars_[show] = cvars.register_cvar({"vo_show", "0", 0, "show the obscurance alone", 0.0f, 1.0f});
+    cvars_[show] =
+        cvars.register_cvar({"vo_show", "0", 0, "show the obscurance alone", 0.0f, 1.0f});
     read();
 }
 
@@ -66,7 +68,8 @@ void ObscuranceCvars::read() {
         s.mode = ObscuranceMode::lines5;
         if (warn_) {
             warn_("vo_mode \"" + cvars_[mode]->string() +
-                  "\" is not one of lines5, lines9, points12, points33; using lines5");
+                  "\" is not one of lines5, lines9, points12, points33, area1, reference; "
+                  "using lines5");
         }
     }
     s.radius = cvars_[radius]->value();

@@ -94,10 +94,13 @@ void main() {
     }
     vec3 n = unit_or_up(v_world_normal);
     vec3 v = unit_or_up(u_eye - v_world_position);
-    vec3 shaded = ill_shade(kd, v_world_position, n, v, masks, v_cube_n, v_cube_back);
+    vec3 ambient_light;
+    vec3 shaded =
+        ill_shade(kd, v_world_position, n, v, masks, v_cube_n, v_cube_back, ambient_light);
     vec3 glow = ill_final_colour() ? texture(u_fullbright, v_uv).rgb : vec3(0.0);
     o_color = vec4(shaded + glow, u_alpha);
-    o_normal = vec4(unit_or_up(v_view_normal) * 0.5 + 0.5, 1.0);
+    o_normal = vec4(unit_or_up(v_view_normal) * 0.5 + 0.5,
+                    ill_ambient_share(ambient_light, shaded + glow));
 }
 )";
 

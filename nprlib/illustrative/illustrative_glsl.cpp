@@ -73,7 +73,10 @@ float ill_fresnel(float one_minus_n_dot_v) {
     return f > 0.5 ? mix(u_fresnel_ranges.y, u_fresnel_ranges.z, 2.0 * f - 1.0)
                    : mix(u_fresnel_ranges.x, u_fresnel_ranges.y, 2.0 * f);
 }
-vec3 ill_shade(vec3 kd, vec3 position, vec3 n, vec3 v, vec4 masks, vec3 cube_n, vec3 cube_back) {
+// The lit colour; `ambient_light` is the part of it the ambient cube gives (k_d a(n) and the
+// dedicated rim), which ambient obscurance darkens.
+vec3 ill_shade(vec3 kd, vec3 position, vec3 n, vec3 v, vec4 masks, vec3 cube_n, vec3 cube_back,
+               out vec3 ambient_light) {
     float one_minus_n_dot_v = 1.0 - clamp(dot(n, v), 0.0, 1.0);
     float f_r = one_minus_n_dot_v * one_minus_n_dot_v;
     f_r *= f_r;
@@ -102,7 +105,9 @@ vec3 ill_shade(vec3 kd, vec3 position, vec3 n, vec3 v, vec4 masks, vec3 cube_n, 
 #endif
     }
     float up = max(n.z, 0.0);
-    rim += u_terms.z * up * f_r * k_r * u_phong.w * cube_back;
+    vec3 dedicated_rim = u_terms.z * up * f_r * k_r * u_phong.w * cube_back;
+    rim += dedicated_rim;
+    ambient_light = kd * ambient + dedicated_rim;
     vec3 diffuse = kd * (ambient + warped);
 #ifdef ILL_SHOW_TERMS
     if (u_show == 1) return kd;
@@ -114,6 +119,13 @@ vec3 ill_shade(vec3 kd, vec3 position, vec3 n, vec3 v, vec4 masks, vec3 cube_n, 
     if (u_show == 7) return specular + rim;
 #endif
     return diffuse + specular + rim;
+}
+// The share of a colour that is ambient light, for the G-buffer's normal alpha (the part the
+// engine's obscurance darkens); a little above 0 so the pixel still counts as a surface.
+float ill_ambient_share(vec3 ambient_light, vec3 colour) {
+    const vec3 luma = vec3(0.299, 0.587, 0.114);
+    float total = dot(colour, luma);
+    return total > 1e-4 ? clamp(dot(ambient_light, luma) / total, 0.01, 1.0) : 1.0;
 }
 )";
 

@@ -12,6 +12,8 @@ void main() {
 )";
 
 const char* const kSceneLibrary = R"(
+// Distances beyond this are all "far" in the moments (float precision of distance^2).
+#define VO_MOMENTS_FAR 4096.0
 uniform sampler2D u_depth;
 uniform sampler2D u_normal;
 uniform vec4 u_projection;  // P[0][0], P[1][1], P[2][2], P[3][2] of a symmetric perspective
@@ -24,8 +26,10 @@ float scene_distance(ivec2 texel) {
     float ndc_z = texelFetch(u_depth, texel, 0).r * 2.0 - 1.0;
     return u_projection.w / (ndc_z + u_projection.z);
 }
-// View-space normal and whether the texel holds a surface that receives obscurance (alpha 1;
-// the sky, the clear colour and liquids write 0).
+// View-space normal and the share of the texel's colour that obscurance darkens (alpha: 1 for
+// all of it, a style's ambient share where it keeps ambient light apart; the sky, the clear
+// colour and liquids write 0).
+bool receives(vec4 normal) { return normal.a > 0.002; }
 vec4 scene_normal(ivec2 texel) {
     vec4 encoded = texelFetch(u_normal, texel, 0);
     return vec4(encoded.xyz * 2.0 - 1.0, encoded.a);
@@ -46,12 +50,15 @@ uniform vec2 u_radii;       // R and the second radius (0 = none)
 uniform int u_dual_minimum;
 uniform float u_thickness;  // 0 = infinitely thick
 uniform int u_normal_clamp;
-#ifdef VO_LINES
+#if defined(VO_LINES)
 #define VO_COUNT VO_LINES
 uniform vec3 u_samples[VO_COUNT];  // x, y on the unit disk, weight
-#else
+#elif defined(VO_POINTS)
 #define VO_COUNT VO_POINTS
 uniform vec4 u_samples[VO_COUNT];  // x, y, z in the unit ball, weight
+#elif defined(VO_AREA)
+uniform sampler2D u_moments;  // (distance, distance^2) of the depth buffer, mipmapped
+uniform vec2 u_moments_scale;  // scene size / the moments texture's (padded) size
 #endif
 layout(location = 0) out float o_open;
 
@@ -62,31 +69,66 @@ float open_length(float t_scene, float lo, float limit) {
     return open_len;
 }
 
-#ifdef VO_LINES
-float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
+#if defined(VO_LINES) || defined(VO_REFERENCE)
+// One line through the sphere at s on the unit disk: its open and its available length (the
+// part above the tangent plane with the clamp, else all 2 z_s of it).
+void line_lengths(vec3 p, vec3 n, float radius, vec2 s, out float open_len, out float available) {
     float t_p = -p.z;
+    float z_s = radius * sqrt(max(1.0 - dot(s, s), 1e-4));
+    // The line runs along the view ray of the depth texel under the offset point, as the
+    // depth buffer does: the texel's own ray, so a flat surface meets its tangent plane.
+    ivec2 texel = scene_texel(project(vec3(p.xy + radius * s, p.z)));
+    vec3 ray = view_position((vec2(texel) + 0.5) / vec2(u_scene_size), 1.0);
+    float t_scene = scene_distance(texel);
+    float lo = t_p - z_s, hi = t_p + z_s;
+    // Where the ray passes behind the tangent plane (the camera is in front of it).
+    float n_dot_ray = dot(n, ray);
+    float limit =
+        u_normal_clamp != 0 && n_dot_ray < -1e-6 ? clamp(dot(n, p) / n_dot_ray, lo, hi) : hi;
+    open_len = open_length(t_scene, lo, limit);
+    available = limit - lo;
+}
+// Open over available volume with the clamp; without it, a flat surface has half its sphere
+// behind it, so the open share of the whole sphere is doubled.
+float line_result(float open_sum, float available_sum, float volume_sum) {
+    if (u_normal_clamp == 0) return clamp(2.0 * open_sum / volume_sum, 0.0, 1.0);
+    return available_sum > 1e-4 * volume_sum ? clamp(open_sum / available_sum, 0.0, 1.0) : 1.0;
+}
+#endif
+
+#if defined(VO_LINES)
+float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
     float open_sum = 0.0, available_sum = 0.0;
     for (int i = 0; i < VO_COUNT; ++i) {
         vec2 s = rotation * vec2(u_samples[i].x * reflection, u_samples[i].y);
-        float z_s = radius * sqrt(max(1.0 - dot(s, s), 1e-4));
-        // The line runs along the view ray of the depth texel under the offset point, as the
-        // depth buffer does: the texel's own ray, so a flat surface meets its tangent plane.
-        ivec2 texel = scene_texel(project(vec3(p.xy + radius * s, p.z)));
-        vec3 ray = view_position((vec2(texel) + 0.5) / vec2(u_scene_size), 1.0);
-        float t_scene = scene_distance(texel);
-        float lo = t_p - z_s, hi = t_p + z_s;
-        // Where the ray passes behind the tangent plane (the camera is in front of it).
-        float n_dot_ray = dot(n, ray);
-        float limit =
-            u_normal_clamp != 0 && n_dot_ray < -1e-6 ? clamp(dot(n, p) / n_dot_ray, lo, hi) : hi;
-        float weight = u_samples[i].z / (2.0 * z_s);
-        open_sum += weight * open_length(t_scene, lo, limit);
-        available_sum += weight * (limit - lo);
+        float open_len, available;
+        line_lengths(p, n, radius, s, open_len, available);
+        // Each line stands for its Voronoi region's volume: weight per unit of its length.
+        float per_length = u_samples[i].z / (2.0 * radius * sqrt(max(1.0 - dot(s, s), 1e-4)));
+        open_sum += per_length * open_len;
+        available_sum += per_length * available;
     }
-    if (u_normal_clamp == 0) return clamp(2.0 * open_sum, 0.0, 1.0);
-    return available_sum > 1e-4 ? clamp(open_sum / available_sum, 0.0, 1.0) : 1.0;
+    return line_result(open_sum, available_sum, 1.0);
 }
-#else
+#elif defined(VO_REFERENCE)
+// VO_REFERENCE x VO_REFERENCE cells over the disk's square, one line through each centre
+// inside the disk: every line stands for the same area, so its length is its volume.
+float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
+    float open_sum = 0.0, available_sum = 0.0, volume_sum = 0.0;
+    for (int j = 0; j < VO_REFERENCE; ++j) {
+        for (int i = 0; i < VO_REFERENCE; ++i) {
+            vec2 s = (vec2(i, j) + 0.5) * (2.0 / float(VO_REFERENCE)) - 1.0;
+            if (dot(s, s) >= 1.0) continue;
+            float open_len, available;
+            line_lengths(p, n, radius, s, open_len, available);
+            open_sum += open_len;
+            available_sum += available;
+            volume_sum += 2.0 * radius * sqrt(1.0 - dot(s, s));
+        }
+    }
+    return line_result(open_sum, available_sum, volume_sum);
+}
+#elif defined(VO_POINTS)
 float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
     float open_sum = 0.0;
     // Points on the tangent plane of a flat surface stay open, also where a texel's depth
@@ -102,23 +144,110 @@ float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflectio
     }
     return u_normal_clamp != 0 ? open_sum : clamp(2.0 * open_sum, 0.0, 1.0);
 }
+#elif defined(VO_AREA)
+// The box model: the depths under the sphere's disk, relative to its centre, spread evenly
+// over [mean - h, mean + h] (h = sqrt(3 variance)), the same for every column of the sphere.
+// A column z from the centre plane (half-length z) is open for clamp(d, -z, z) + z of its
+// length when the scene lies d behind the centre; over the sphere, with r dr = -z dz, the open
+// fraction is 1/2 + 3 / (2 R^3) E[G'(d)] where G'(d) = integral_0^R z clamp(d, -z, z) dz and
+// G its antiderivative in d, so the mean over the box is a difference of G.
+float box_g(float d, float radius) {
+    float a = abs(d);
+    float m = min(a, radius);
+    float m3 = m * m * m;
+    return a * m3 / 3.0 - 0.125 * m3 * m + 0.25 * d * d * (radius * radius - m * m);
+}
+float box_g_slope(float d, float radius) {
+    float a = abs(d);
+    float m = min(a, radius);
+    return sign(d) * (m * m * m / 3.0 + 0.5 * a * (radius * radius - m * m));
+}
+float box_mean_slope(float mean, float h, float radius) {
+    if (h < 1e-3 * radius) return box_g_slope(mean, radius);
+    return (box_g(mean + h, radius) - box_g(mean - h, radius)) / (2.0 * h);
+}
+// With a thickness T what lies more than T behind the scene is open again:
+// + 1/2 - 3 / (2 R^3) E[G'(d + T)].
+float box_open(float mean, float variance, float radius) {
+    float h = sqrt(3.0 * max(variance, 0.0));
+    float scale = 1.5 / (radius * radius * radius);
+    float open = 0.5 + scale * box_mean_slope(mean, h, radius);
+    if (u_thickness > 0.0) open += 0.5 - scale * box_mean_slope(mean + u_thickness, h, radius);
+    return open;
+}
+// The tangent plane's distance at a scene uv (far where its ray misses the plane).
+float plane_distance(vec3 p, vec3 n, vec2 uv) {
+    float along = dot(n, view_position(uv, 1.0));
+    return along < -1e-6 ? min(dot(n, p) / along, VO_MOMENTS_FAR) : VO_MOMENTS_FAR;
+}
+// The scene's and the tangent plane's distance moments through the same footprint: a bilinear
+// fetch of mip `level` at uv, and the plane over the four texels it blends (each texel's box by
+// a 2 x 2 Gauss rule, exact for a quadratic), weighted as the fetch weighs them.
+void level_moments(vec3 p, vec3 n, vec2 uv, float level, out vec2 scene, out vec2 plane) {
+    scene = textureLod(u_moments, uv * u_moments_scale, level).rg;
+    float texel = exp2(level);  // scene pixels per texel of this level
+    vec2 position = uv * vec2(u_scene_size) / texel - 0.5;
+    vec2 base = floor(position), f = position - base;
+    const float kGauss = 0.5 - 0.5 / 1.7320508;  // a box's Gauss points at 0.21 and 0.79
+    plane = vec2(0.0);
+    for (int j = 0; j < 2; ++j) {
+        for (int i = 0; i < 2; ++i) {
+            float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+            vec2 corner = (base + vec2(i, j)) * texel;
+            for (int k = 0; k < 4; ++k) {
+                vec2 g = vec2(k & 1, k >> 1) * (1.0 - 2.0 * kGauss) + kGauss;
+                float t = plane_distance(p, n, (corner + g * texel) / vec2(u_scene_size));
+                plane += 0.25 * w * vec2(t, t * t);
+            }
+        }
+    }
+}
+float level_open(vec3 p, vec3 n, vec2 uv, float level, float radius) {
+    vec2 scene, plane;
+    level_moments(p, n, uv, level, scene, plane);
+    float open = box_open(scene.x + p.z, scene.y - scene.x * scene.x, radius);
+    if (u_normal_clamp == 0) return clamp(2.0 * open, 0.0, 1.0);
+    float plane_open = box_open(plane.x + p.z, plane.y - plane.x * plane.x, radius);
+    return plane_open > 1e-3 ? clamp(open / plane_open, 0.0, 1.0) : 1.0;
+}
+// One area sample: the moments at the mip level whose footprint spreads like the sphere's disk
+// on the screen (a disk of radius r has per-axis variance r^2 / 4, as a bilinear footprint r
+// texels wide), blended between the two nearest levels. Without the clamp, a flat surface
+// fills half the sphere, so the open share is doubled. With it, the part of the sphere the
+// scene fills above the tangent plane is what it fills beyond the plane's own share over the
+// same footprint (f_plane - f_scene of f_plane), so a flat surface, tilted or not, is fully
+// open and a wall beside it darkens it by what it adds.
+float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
+    float radius_texels = radius * u_projection.x / -p.z * 0.5 * float(u_scene_size.x);
+    float lod = clamp(log2(radius_texels), 0.0, float(VO_MOMENTS_LEVELS - 1));
+    float level = floor(lod);
+    vec2 uv = project(p);
+    float open = level_open(p, n, uv, level, radius);
+    if (lod > level) open = mix(open, level_open(p, n, uv, level + 1.0, radius), lod - level);
+    return open;
+}
 #endif
 
 // A 4x4 ordered (Bayer) pattern of 16 rotations, every other one reflected.
 const int kBayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
 void pixel_pattern(out mat2 rotation, out float reflection) {
+#ifdef VO_REFERENCE
+    rotation = mat2(1.0);  // the reference is not randomised
+    reflection = 1.0;
+#else
     ivec2 q = ivec2(gl_FragCoord.xy) & 3;
     int bayer = kBayer[q.y * 4 + q.x];
     float angle = (float(bayer) + 0.5) * (6.2831853 / 16.0);
     float c = cos(angle), s = sin(angle);
     rotation = mat2(c, s, -s, c);
     reflection = (bayer & 1) == 0 ? 1.0 : -1.0;
+#endif
 }
 
 void main() {
     ivec2 texel = scene_texel(v_uv);
     vec4 normal = scene_normal(texel);
-    if (normal.a < 0.5) {
+    if (!receives(normal)) {
         o_open = 1.0;
         return;
     }
@@ -143,6 +272,17 @@ void main() {
 }
 )";
 
+const char* const kMomentsFragment = R"(
+in vec2 v_uv;
+uniform vec2 u_moments_scale;
+layout(location = 0) out vec2 o_moments;
+void main() {
+    // The padding beyond the scene repeats its edge texels.
+    float t = min(scene_distance(scene_texel(v_uv / u_moments_scale)), VO_MOMENTS_FAR);
+    o_moments = vec2(t, t * t);
+}
+)";
+
 const char* const kBlurFragment = R"(
 in vec2 v_uv;
 uniform sampler2D u_open;
@@ -154,7 +294,7 @@ void main() {
     ivec2 centre = clamp(ivec2(v_uv * vec2(size)), ivec2(0), size - 1);
     ivec2 scene_centre = scene_texel((vec2(centre) + 0.5) / vec2(size));
     vec4 n0 = scene_normal(scene_centre);
-    if (n0.a < 0.5) {
+    if (!receives(n0)) {
         o_open = 1.0;
         return;
     }
@@ -165,7 +305,7 @@ void main() {
         ivec2 scene_q = scene_texel((vec2(q) + 0.5) / vec2(size));
         vec4 n = scene_normal(scene_q);
         float depth_weight = max(0.0, 1.0 - abs(scene_distance(scene_q) - t0) / (0.03 * t0));
-        float normal_weight = pow(max(dot(n.xyz, n0.xyz), 0.0), 8.0) * step(0.5, n.a);
+        float normal_weight = pow(max(dot(n.xyz, n0.xyz), 0.0), 8.0) * (receives(n) ? 1.0 : 0.0);
         float w = kGauss[abs(k)] * depth_weight * normal_weight;
         sum += w * texelFetch(u_open, q, 0).r;
         weights += w;
@@ -174,14 +314,16 @@ void main() {
 }
 )";
 
-const char* const kCompositeFragment = R"(#version 330 core
+const char* const kCompositeFragment = R"(
 in vec2 v_uv;
 uniform sampler2D u_open;
 uniform float u_strength;
+uniform int u_show;
 layout(location = 0) out vec4 o_color;
 void main() {
     float open = texture(u_open, v_uv).r;
-    o_color = vec4(vec3(mix(1.0, open, u_strength)), 1.0);
+    float share = u_show != 0 ? 1.0 : scene_normal(scene_texel(v_uv)).a;
+    o_color = vec4(vec3(mix(1.0, open, u_strength * share)), 1.0);
 }
 )";
 

@@ -2,7 +2,8 @@
 // triangle (kFullscreenVertex) and reads the scene's depth and view-space normals with nearest
 // fetches, so no sample blends depths across an edge.
 //
-// kEstimateFragment, compiled with "#define VO_LINES n" or "#define VO_POINTS n": the fraction
+// kEstimateFragment, compiled with "#define VO_LINES n", "VO_POINTS n", "VO_AREA" or
+// "VO_REFERENCE k": the fraction
 // of the sphere of radius R around each pixel's view-space point that is open (not inside the
 // scene), 1 = unoccluded. Lines (the paper's 4.1): each sample (x, y, w) on the unit disk is a
 // line through the sphere along the view direction, half-length z_s = R sqrt(1 - x^2 - y^2);
@@ -14,7 +15,12 @@
 // thickness T (4.3) the scene is a shell T deep: what lies behind it is open again, so
 // foreground edges do not darken the background behind them. Two radii combine by product or
 // minimum. Each pixel rotates (and every other pixel reflects) its sample set by a 4x4 pattern,
-// which the blur then averages.
+// which the blur then averages. Area (4.2): one sample, the mean and variance of the depths
+// under the sphere's disk from a mip chain of depth moments (kMomentsFragment), integrated in
+// closed form with the depths spread evenly (a box) around their mean. Reference: k x k
+// stratified lines, not randomised: the converged value of the lines' estimate.
+//
+// kMomentsFragment: (distance, distance^2) per scene texel, level 0 of the moments' mip chain.
 //
 // kBlurFragment: one direction of a separable 9-tap Gaussian, each tap weighted down by its
 // depth difference relative to the centre's distance and by the angle between the normals.
@@ -28,6 +34,7 @@ namespace nq::npr::obscurance {
 extern const char* const kFullscreenVertex;
 extern const char* const kSceneLibrary;  // depth to distance, projection, normals
 extern const char* const kEstimateFragment;
+extern const char* const kMomentsFragment;
 extern const char* const kBlurFragment;
 extern const char* const kCompositeFragment;
 

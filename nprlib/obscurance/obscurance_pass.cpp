@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <span>
 #include <string>
 #include <vector>
@@ -16,9 +17,30 @@ constexpr char kHeader[] = "#version 330 core\n";
 constexpr int kUnitDepth = 0;
 constexpr int kUnitNormal = 1;
 constexpr int kUnitOpen = 2;
+constexpr int kUnitMoments = 3;
+constexpr int kReferenceGrid = 64;  // lines per side of the reference's grid (~3,200 lines)
+// area1's mip chain of depth moments: levels 0..7, its size padded to a multiple of the last
+// level's texel (128) so that every level averages exact 2 x 2 blocks, as the shader assumes.
+constexpr int kMomentsLevels = 8;
+constexpr int kMomentsPadding = 1 << (kMomentsLevels - 1);
+
+int padded(int size) {
+    return (size + kMomentsPadding - 1) / kMomentsPadding * kMomentsPadding;
+}
+
+// Scene uv to the padded moments texture's uv.
+void set_moments_scale(gl::Program& program, const SceneTextures& scene) {
+    glUniform2f(program.location("u_moments_scale"),
+                float(scene.width) / float(padded(scene.width)),
+                float(scene.height) / float(padded(scene.height)));
+}
 
 bool is_lines(ObscuranceMode mode) {
     return mode == ObscuranceMode::lines5 || mode == ObscuranceMode::lines9;
+}
+
+bool is_points(ObscuranceMode mode) {
+    return mode == ObscuranceMode::points12 || mode == ObscuranceMode::points33;
 }
 
 int sample_count(ObscuranceMode mode) {
@@ -31,13 +53,23 @@ int sample_count(ObscuranceMode mode) {
             return 12;
         case ObscuranceMode::points33:
             return 33;
+        case ObscuranceMode::area1:
+            return 1;
+        case ObscuranceMode::reference:
+            return kReferenceGrid;
     }
     return 5;
 }
 
 std::string estimate_defines(ObscuranceMode mode) {
-    return std::string(is_lines(mode) ? "#define VO_LINES " : "#define VO_POINTS ") +
-           std::to_string(sample_count(mode)) + "\n";
+    const std::string count = std::to_string(sample_count(mode));
+    if (is_lines(mode)) return "#define VO_LINES " + count + "\n";
+    if (is_points(mode)) return "#define VO_POINTS " + count + "\n";
+    if (mode == ObscuranceMode::area1) {
+        return "#define VO_AREA\n#define VO_MOMENTS_LEVELS " + std::to_string(kMomentsLevels) +
+               "\n";
+    }
+    return "#define VO_REFERENCE " + count + "\n";
 }
 
 void bind_texture(int unit, GLuint texture) {
@@ -74,7 +106,10 @@ struct SavedState {
 void ObscurancePass::reset() {
     for (gl::Program& program : estimate_) program.reset();
     blur_.reset();
+    moments_program_.reset();
     composite_.reset();
+    moments_ = Target{};
+    moments_width_ = moments_height_ = 0;
     empty_vertex_array_.reset();
     for (Target& target : targets_) target = Target{};
     result_ = nullptr;
@@ -98,10 +133,23 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
         if (is_lines(mode)) {
             const auto rows = line_sample_table(SampleMethod::electrostatic, sample_count(mode));
             glUniform3fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
-        } else {
+        } else if (is_points(mode)) {
             const auto rows = point_sample_table(SampleMethod::electrostatic, sample_count(mode));
             glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
+        } else if (mode == ObscuranceMode::area1) {
+            glUniform1i(estimate.location("u_moments"), kUnitMoments);
         }
+    }
+    if (mode == ObscuranceMode::area1 && !moments_program_) {
+        const std::string fragment = std::string(kHeader) + kSceneLibrary + kMomentsFragment;
+        gl::ProgramBuild build = gl::Program::build(
+            {"obscurance moments", kFullscreenVertex, fragment.c_str()}, tracker_);
+        if (!build.ok()) {
+            error = build.error;
+            return false;
+        }
+        moments_program_ = std::move(build.program);
+        gl::bind_sampler_units(moments_program_, {"u_depth", "u_normal"});
     }
     if (!blur_) {
         const std::string fragment = std::string(kHeader) + kSceneLibrary + kBlurFragment;
@@ -115,15 +163,15 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
         gl::bind_sampler_units(blur_, {"u_depth", "u_normal", "u_open"});
     }
     if (!composite_) {
+        const std::string fragment = std::string(kHeader) + kSceneLibrary + kCompositeFragment;
         gl::ProgramBuild build = gl::Program::build(
-            {"obscurance composite", kFullscreenVertex, kCompositeFragment}, tracker_);
+            {"obscurance composite", kFullscreenVertex, fragment.c_str()}, tracker_);
         if (!build.ok()) {
             error = build.error;
             return false;
         }
         composite_ = std::move(build.program);
-        composite_.use();
-        glUniform1i(composite_.location("u_open"), kUnitOpen);
+        gl::bind_sampler_units(composite_, {"u_depth", "u_normal", "u_open"});
     }
     if (!empty_vertex_array_) empty_vertex_array_ = gl::VertexArray::create(tracker_);
     return true;
@@ -154,6 +202,43 @@ bool ObscurancePass::prepare_targets(int width, int height, std::string& error) 
     return true;
 }
 
+// RG32F: distance^2 reaches 4096^2, past what half floats hold.
+bool ObscurancePass::prepare_moments(int width, int height, std::string& error) {
+    if (moments_.texture && width == moments_width_ && height == moments_height_) return true;
+    moments_.texture = gl::Texture::create(tracker_);
+    glBindTexture(GL_TEXTURE_2D, moments_.texture.id());
+    glTexStorage2D(GL_TEXTURE_2D, kMomentsLevels, GL_RG32F, padded(width), padded(height));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    moments_.framebuffer = gl::Framebuffer::create(tracker_);
+    glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                           moments_.texture.id(), 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        error = "obscurance: the driver refuses an RG32F render target (area1)";
+        moments_ = Target{};
+        return false;
+    }
+    moments_width_ = width;
+    moments_height_ = height;
+    return true;
+}
+
+// Level 0 from the depth buffer, the rest averaged down: each level's texel holds the mean
+// distance and mean squared distance of the scene texels under it.
+void ObscurancePass::build_moments(const SceneTextures& scene) {
+    bind_scene(moments_program_, scene);
+    set_moments_scale(moments_program_, scene);
+    glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer.id());
+    glViewport(0, 0, padded(scene.width), padded(scene.height));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTexture(GL_TEXTURE_2D, moments_.texture.id());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    bind_texture(kUnitMoments, moments_.texture.id());
+}
+
 void ObscurancePass::bind_scene(gl::Program& program, const SceneTextures& scene) {
     program.use();
     const float* p = scene.projection;
@@ -170,6 +255,7 @@ void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettin
     glUniform1i(program.location("u_dual_minimum"), settings.dual == DualRadius::minimum);
     glUniform1f(program.location("u_thickness"), settings.thickness);
     glUniform1i(program.location("u_normal_clamp"), settings.normal_clamp ? 1 : 0);
+    if (settings.mode == ObscuranceMode::area1) set_moments_scale(program, scene);
     glBindFramebuffer(GL_FRAMEBUFFER, targets_[0].framebuffer.id());
     glViewport(0, 0, target_width_, target_height_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -195,8 +281,9 @@ void ObscurancePass::composite(const SceneTextures& scene, const ObscuranceSetti
     const GLenum colour_only = GL_COLOR_ATTACHMENT0;
     glDrawBuffers(1, &colour_only);
     glViewport(0, 0, scene.width, scene.height);
-    composite_.use();
+    bind_scene(composite_, scene);
     glUniform1f(composite_.location("u_strength"), settings.show ? 1.0f : settings.strength);
+    glUniform1i(composite_.location("u_show"), settings.show ? 1 : 0);
     bind_texture(kUnitOpen, result_->id());
     if (settings.show) {
         glDisable(GL_BLEND);
@@ -216,7 +303,9 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
     const int width = settings.half_resolution ? (scene.width + 1) / 2 : scene.width;
     const int height = settings.half_resolution ? (scene.height + 1) / 2 : scene.height;
     SavedState saved;
-    if (!prepare_targets(width, height, error)) {
+    if (!prepare_targets(width, height, error) ||
+        (settings.mode == ObscuranceMode::area1 &&
+         !prepare_moments(scene.width, scene.height, error))) {
         glBindFramebuffer(GL_FRAMEBUFFER, scene.framebuffer);
         return false;
     }
@@ -224,8 +313,9 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(empty_vertex_array_.id());
+    if (settings.mode == ObscuranceMode::area1) build_moments(scene);
     estimate(scene, settings);
-    if (settings.blur) blur(scene);
+    if (settings.blur && settings.mode != ObscuranceMode::reference) blur(scene);
     composite(scene, settings);
     glBindVertexArray(0);
     glActiveTexture(GL_TEXTURE0);

@@ -2,7 +2,8 @@
 // view-space normals, applied to its colour: estimate (obscurance_glsl.h) at full or half
 // resolution, an edge-aware blur, then the colour multiplied by the result (or the result shown
 // alone). Style-independent: the engine runs it after any plugin's scene passes, before the
-// HUD. The sample sets are the committed electrostatic tables (sample_tables.h).
+// HUD. The sample sets are the committed electrostatic tables (sample_tables.h); area1 first
+// builds a mip chain of depth moments; the reference mode is neither randomised nor blurred.
 #pragma once
 
 #include <array>
@@ -36,6 +37,9 @@ class ObscurancePass {
 
     // The last result (R8, 1 = open), at the pass's resolution; 0 before the first apply.
     GLuint open_texture() const { return result_ ? result_->id() : 0; }
+    // area1's depth moments (RG32F, mipmapped: mean distance, mean squared distance); 0 until
+    // area1 has run.
+    GLuint moments_texture() const { return moments_.texture ? moments_.texture.id() : 0; }
 
     void reset();
 
@@ -46,6 +50,8 @@ class ObscurancePass {
     };
     bool build_programs(ObscuranceMode mode, std::string& error);
     bool prepare_targets(int width, int height, std::string& error);
+    bool prepare_moments(int width, int height, std::string& error);
+    void build_moments(const SceneTextures& scene);
     void estimate(const SceneTextures& scene, const ObscuranceSettings& settings);
     void blur(const SceneTextures& scene);
     void composite(const SceneTextures& scene, const ObscuranceSettings& settings);
@@ -53,11 +59,13 @@ class ObscurancePass {
 
     gl::ObjectTracker* tracker_;
     std::array<gl::Program, kObscuranceModes> estimate_;
-    gl::Program blur_, composite_;
+    gl::Program blur_, composite_, moments_program_;
     gl::VertexArray empty_vertex_array_;
     std::array<Target, 2> targets_;
     const gl::Texture* result_ = nullptr;
     int target_width_ = 0, target_height_ = 0;
+    Target moments_;
+    int moments_width_ = 0, moments_height_ = 0;
 };
 
 }  // namespace nq::npr::obscurance

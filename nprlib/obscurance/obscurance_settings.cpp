@@ -20,6 +20,10 @@ std::string_view obscurance_mode_name(ObscuranceMode mode) {
             return "points12";
         case ObscuranceMode::points33:
             return "points33";
+        case ObscuranceMode::area1:
+            return "area1";
+        case ObscuranceMode::reference:
+            return "reference";
     }
     return "lines5";
 }

@@ -10,12 +10,16 @@ namespace nq::npr::obscurance {
 
 // vo_mode: how the sphere around each pixel is sampled.
 enum class ObscuranceMode {
-    lines5,    // 5 line samples on the disk, each integrating occupancy along the sphere's depth
-    lines9,    // 9 line samples
-    points12,  // 12 point samples in the ball (Crytek-style baseline)
-    points33,  // 33 point samples
+    lines5,     // 5 line samples on the disk, each integrating occupancy along the sphere's depth
+    lines9,     // 9 line samples
+    points12,   // 12 point samples in the ball (Crytek-style baseline)
+    points33,   // 33 point samples
+    area1,      // 1 area sample: the mean and variance of the depths under the sphere's disk,
+                // read from a mip chain of depth moments, integrated under a box model
+    reference,  // 64 x 64 stratified lines, no randomisation, no blur: the converged
+                // obscurance of the same depth buffer, for measuring the other modes' error
 };
-inline constexpr int kObscuranceModes = 4;
+inline constexpr int kObscuranceModes = 6;
 
 std::optional<ObscuranceMode> parse_obscurance_mode(std::string_view name);
 std::string_view obscurance_mode_name(ObscuranceMode mode);

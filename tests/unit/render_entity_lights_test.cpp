@@ -285,7 +285,8 @@ TEST(RenderLightSmoother, PassesTheLightListThrough) {
 // ---- ABI ----------------------------------------------------------------------------------
 
 TEST(RenderEntityLights, Abi14AppendsTheListToTheLight) {
-    EXPECT_EQ(NQR_ABI_VERSION, (1u << 16) | 4u);
+    // 1.5 changed no layout (only what the G-buffer normal's alpha means).
+    EXPECT_EQ(NQR_ABI_VERSION, (1u << 16) | 5u);
     // 1.3's nqr_entity_light: size, ambient, directional, direction[3], color[3], cube[6][3].
     const size_t v13 = 4 * (1 + 1 + 1 + 3 + 3 + 18);
     EXPECT_EQ(offsetof(nqr_entity_light, num_lights), v13);
