@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzz one format: fuzz.sh [--bin-dir DIR] FORMAT SECONDS [extra fuzzer args...]
 #   FORMAT is the suffix of a fuzz target (pak, wad, bsp, mdl, spr, dem, progs, sav, wav,
-#   material, warp_ramp).
+#   material, warp_ramp, vo_scene).
 #   Seeds: synthetic files written by the target itself (-nq_write_seeds) plus real files of
 #   that format from the game data ($NPRQ_DATA, default ../shared/data), copied into a
 #   corpus folder under the build tree, never into the repository.

@@ -14,6 +14,7 @@ packages=(
   libpng-dev zlib1g-dev             # screenshots (PNG)
   libgl1-mesa-dri libegl-mesa0      # headless OpenGL (llvmpipe) for tests
   python3-matplotlib                # demos/bench_report.py: the benchmark report's charts
+  libembree-dev                     # vo_reference: ray-traced obscurance reference (a tool)
 )
 
 missing=()

@@ -94,6 +94,8 @@ bool Engine::start() {
         {"r_viewmodel_quake", "0", kCvarArchive,
          "1: raise the weapon with the status bar's size, as GLQuake did (0: as QuakeSpasm)", 0.0f,
          1.0f});
+    cvars_.draw_viewmodel = host_.cvars().register_cvar(
+        {"r_drawviewmodel", "1", kCvarArchive, "0: the player's weapon is not drawn", 0.0f, 1.0f});
     cvars_.occlusion = host_.cvars().register_cvar(
         {"r_occlusion", "1", kCvarArchive,
          "1: models the world hides completely are flagged so plugins skip them (0: off)", 0.0f,
@@ -429,6 +431,7 @@ void Engine::render_demo(double real_time, float frame_time) {
     settings.contents_user = const_cast<Bsp*>(level.world_bsp());
     settings.view_model_lift =
         cvars_.viewmodel_quake->value() != 0 ? view_model_lift_for(hud_->viewsize()) : 0.0f;
+    settings.draw_view_model = cvars_.draw_viewmodel->value() != 0;
     ViewResult view = compute_view(demo_->client(), view_state_, settings);
     listener_ = listener_for_view(view.origin, view.angles, demo_->client().view_entity());
     scene_.set_occlusion_culling(cvars_.occlusion->value() != 0 && !multisampled_screen_);

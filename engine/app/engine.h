@@ -53,6 +53,7 @@ struct EngineCvars {
     Cvar* host_maxfps = nullptr;
     Cvar* showroom_time = nullptr;
     Cvar* viewmodel_quake = nullptr;
+    Cvar* draw_viewmodel = nullptr;
     Cvar* occlusion = nullptr;
     Cvar* gamma = nullptr;
     Cvar* host_framerate = nullptr;

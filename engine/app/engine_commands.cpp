@@ -65,6 +65,13 @@ void Engine::register_commands() {
         [this](const CommandArgs& a) { screenshot(a.argc() > 1 ? a.argv(1) : std::string()); },
         "save the screen as PNG (screenshot [file.png])");
     c.add_command(
+        "vo_dump_scene",
+        [this](const CommandArgs& a) {
+            if (a.argc() < 2) return print("usage: vo_dump_scene <file>");
+            dispatch_->dump_scene_next_frame(a.argv(1), [this](const std::string& m) { print(m); });
+        },
+        "write the next frame's geometry for the ray-traced obscurance reference (vo_reference)");
+    c.add_command(
         "r_plugin",
         [this](const CommandArgs& a) {
             if (a.argc() < 2) {

@@ -42,6 +42,13 @@ void ObscuranceCvars::register_cvars(CvarRegistry& cvars,
     cvars_[half] = flag("vo_half", d.half_resolution, "compute at half resolution");
     cvars_[show] =
         cvars.register_cvar({"vo_show", "0", 0, "show the obscurance alone", 0.0f, 1.0f});
+    cvars_[sample_set] = cvars.register_cvar(
+        {"vo_sample_set",
+         npr::obscurance::sample_method_name(d.sample_method),
+         kCvarArchive,
+         "the line and point sets: electrostatic (the paper's), poisson or lloyd (for comparison)",
+         {},
+         {}});
     read();
 }
 
@@ -81,6 +88,13 @@ void ObscuranceCvars::read() {
     s.blur = cvars_[blur]->value() != 0.0f;
     s.half_resolution = cvars_[half]->value() != 0.0f;
     s.show = cvars_[show]->value() != 0.0f;
+    if (!npr::obscurance::parse_sample_method(cvars_[sample_set]->string(), s.sample_method)) {
+        s.sample_method = npr::obscurance::SampleMethod::electrostatic;
+        if (warn_) {
+            warn_("vo_sample_set \"" + cvars_[sample_set]->string() +
+                  "\" is not one of electrostatic, poisson, lloyd; using electrostatic");
+        }
+    }
 }
 
 }  // namespace nq

@@ -33,6 +33,7 @@ class ObscuranceCvars {
         blur,
         half,
         show,
+        sample_set,
         count
     };
     void read();

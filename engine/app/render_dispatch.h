@@ -4,6 +4,7 @@
 // the GPU pass timers.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -44,6 +45,13 @@ class RenderDispatch {
 
     bool defaults_active() const { return defaults_ != nullptr; }
 
+    // vo_dump_scene: the next frame drawn also writes its geometry to `path` (scene_file.h),
+    // for the ray-traced obscurance reference; `done` gets the message to print.
+    void dump_scene_next_frame(std::string path, std::function<void(const std::string&)> done) {
+        dump_path_ = std::move(path);
+        dump_done_ = std::move(done);
+    }
+
     // -benchtrace: each pass's CPU time is charged to its stage (may be null).
     void set_trace(FrameTrace* trace) { trace_ = trace; }
 
@@ -53,6 +61,7 @@ class RenderDispatch {
     void draw_scene(const nqr_renderer* r, const nqr_frame& frame);
     void post_process(const nqr_renderer* r, const nqr_frame& frame);
     void apply_obscurance(const nqr_frame& frame);
+    void dump_scene(const nqr_frame& frame);
 
     PluginHost& plugins_;
     GpuPassTimers* timers_;
@@ -62,6 +71,8 @@ class RenderDispatch {
     npr::obscurance::ObscuranceSettings obscurance_settings_;  // disabled by default
     npr::obscurance::ObscurancePass obscurance_;
     bool obscurance_failed_ = false;  // reported once; off for the rest of the run
+    std::string dump_path_;
+    std::function<void(const std::string&)> dump_done_;
 };
 
 }  // namespace nq

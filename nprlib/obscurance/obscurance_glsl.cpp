@@ -52,7 +52,8 @@ uniform float u_thickness;  // 0 = infinitely thick
 uniform int u_normal_clamp;
 #if defined(VO_LINES)
 #define VO_COUNT VO_LINES
-uniform vec3 u_samples[VO_COUNT];  // x, y on the unit disk, weight
+// x, y on the unit disk, sqrt(1 - x^2 - y^2), Voronoi weight / (2 sqrt(1 - x^2 - y^2))
+uniform vec4 u_samples[VO_COUNT];
 #elif defined(VO_POINTS)
 #define VO_COUNT VO_POINTS
 uniform vec4 u_samples[VO_COUNT];  // x, y, z in the unit ball, weight
@@ -60,7 +61,9 @@ uniform vec4 u_samples[VO_COUNT];  // x, y, z in the unit ball, weight
 uniform sampler2D u_moments;  // (distance, distance^2) of the depth buffer, mipmapped
 uniform vec2 u_moments_scale;  // scene size / the moments texture's (padded) size
 #endif
-layout(location = 0) out float o_open;
+// The result with what the blur needs of the texel, so that it reads one texture per tap:
+// (open, distance, view-space normal x and y); distance 0 where nothing receives obscurance.
+layout(location = 0) out vec4 o_open;
 
 // The open part [lo, min(t_scene, limit)] of a line, plus what lies behind a shell T deep.
 float open_length(float t_scene, float lo, float limit) {
@@ -72,9 +75,11 @@ float open_length(float t_scene, float lo, float limit) {
 #if defined(VO_LINES) || defined(VO_REFERENCE)
 // One line through the sphere at s on the unit disk: its open and its available length (the
 // part above the tangent plane with the clamp, else all 2 z_s of it).
-void line_lengths(vec3 p, vec3 n, float radius, vec2 s, out float open_len, out float available) {
+// column = sqrt(1 - |s|^2), the line's half-length on the unit sphere.
+void line_lengths(vec3 p, vec3 n, float radius, vec2 s, float column, out float open_len,
+                  out float available) {
     float t_p = -p.z;
-    float z_s = radius * sqrt(max(1.0 - dot(s, s), 1e-4));
+    float z_s = radius * column;
     // The line runs along the view ray of the depth texel under the offset point, as the
     // depth buffer does: the texel's own ray, so a flat surface meets its tangent plane.
     ivec2 texel = scene_texel(project(vec3(p.xy + radius * s, p.z)));
@@ -102,13 +107,12 @@ float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflectio
     for (int i = 0; i < VO_COUNT; ++i) {
         vec2 s = rotation * vec2(u_samples[i].x * reflection, u_samples[i].y);
         float open_len, available;
-        line_lengths(p, n, radius, s, open_len, available);
+        line_lengths(p, n, radius, s, u_samples[i].z, open_len, available);
         // Each line stands for its Voronoi region's volume: weight per unit of its length.
-        float per_length = u_samples[i].z / (2.0 * radius * sqrt(max(1.0 - dot(s, s), 1e-4)));
-        open_sum += per_length * open_len;
-        available_sum += per_length * available;
+        open_sum += u_samples[i].w * open_len;
+        available_sum += u_samples[i].w * available;
     }
-    return line_result(open_sum, available_sum, 1.0);
+    return line_result(open_sum / radius, available_sum / radius, 1.0);
 }
 #elif defined(VO_REFERENCE)
 // VO_REFERENCE x VO_REFERENCE cells over the disk's square, one line through each centre
@@ -119,11 +123,12 @@ float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflectio
         for (int i = 0; i < VO_REFERENCE; ++i) {
             vec2 s = (vec2(i, j) + 0.5) * (2.0 / float(VO_REFERENCE)) - 1.0;
             if (dot(s, s) >= 1.0) continue;
+            float column = sqrt(1.0 - dot(s, s));
             float open_len, available;
-            line_lengths(p, n, radius, s, open_len, available);
+            line_lengths(p, n, radius, s, column, open_len, available);
             open_sum += open_len;
             available_sum += available;
-            volume_sum += 2.0 * radius * sqrt(1.0 - dot(s, s));
+            volume_sum += 2.0 * radius * column;
         }
     }
     return line_result(open_sum, available_sum, volume_sum);
@@ -248,18 +253,16 @@ void main() {
     ivec2 texel = scene_texel(v_uv);
     vec4 normal = scene_normal(texel);
     if (!receives(normal)) {
-        o_open = 1.0;
+        o_open = vec4(1.0, 0.0, 0.0, 0.0);
         return;
     }
     float distance = scene_distance(texel);
+    vec3 n = normalize(normal.xyz);
+    o_open = vec4(1.0, distance, n.xy);
     // A sphere smaller than a pixel has nothing the depth buffer can resolve.
     float radius_pixels = u_radii.x * u_projection.x / distance * 0.5 * float(u_scene_size.x);
-    if (radius_pixels < 1.0) {
-        o_open = 1.0;
-        return;
-    }
+    if (radius_pixels < 1.0) return;
     vec3 p = view_position(v_uv, distance);
-    vec3 n = normalize(normal.xyz);
     mat2 rotation;
     float reflection;
     pixel_pattern(rotation, reflection);
@@ -268,7 +271,7 @@ void main() {
         float second = open_fraction(p, n, u_radii.y, rotation, reflection);
         open = u_dual_minimum != 0 ? min(open, second) : open * second;
     }
-    o_open = open;
+    o_open.x = open;
 }
 )";
 
@@ -285,32 +288,28 @@ void main() {
 
 const char* const kBlurFragment = R"(
 in vec2 v_uv;
-uniform sampler2D u_open;
-uniform ivec2 u_step;  // (1, 0) or (0, 1)
-layout(location = 0) out float o_open;
+uniform sampler2D u_open;  // (open, distance, normal x, normal y), as the estimate wrote it
+uniform ivec2 u_step;      // (1, 0) or (0, 1)
+layout(location = 0) out vec4 o_open;
 const float kGauss[5] = float[5](0.2270270, 0.1945946, 0.1216216, 0.0540541, 0.0162162);
+vec3 unpack_normal(vec2 xy) { return vec3(xy, sqrt(max(1.0 - dot(xy, xy), 0.0))); }
 void main() {
     ivec2 size = textureSize(u_open, 0);
     ivec2 centre = clamp(ivec2(v_uv * vec2(size)), ivec2(0), size - 1);
-    ivec2 scene_centre = scene_texel((vec2(centre) + 0.5) / vec2(size));
-    vec4 n0 = scene_normal(scene_centre);
-    if (!receives(n0)) {
-        o_open = 1.0;
-        return;
-    }
-    float t0 = scene_distance(scene_centre);
+    vec4 c = texelFetch(u_open, centre, 0);
+    o_open = c;
+    if (c.y <= 0.0) return;  // nothing here receives obscurance
+    vec3 n0 = unpack_normal(c.zw);
     float sum = 0.0, weights = 0.0;
     for (int k = -4; k <= 4; ++k) {
-        ivec2 q = clamp(centre + k * u_step, ivec2(0), size - 1);
-        ivec2 scene_q = scene_texel((vec2(q) + 0.5) / vec2(size));
-        vec4 n = scene_normal(scene_q);
-        float depth_weight = max(0.0, 1.0 - abs(scene_distance(scene_q) - t0) / (0.03 * t0));
-        float normal_weight = pow(max(dot(n.xyz, n0.xyz), 0.0), 8.0) * (receives(n) ? 1.0 : 0.0);
-        float w = kGauss[abs(k)] * depth_weight * normal_weight;
-        sum += w * texelFetch(u_open, q, 0).r;
+        vec4 q = texelFetch(u_open, clamp(centre + k * u_step, ivec2(0), size - 1), 0);
+        float depth_weight = max(0.0, 1.0 - abs(q.y - c.y) / (0.03 * c.y));
+        float normal_weight = pow(max(dot(unpack_normal(q.zw), n0), 0.0), 8.0);
+        float w = kGauss[abs(k)] * depth_weight * normal_weight * step(1e-6, q.y);
+        sum += w * q.x;
         weights += w;
     }
-    o_open = weights > 1e-5 ? sum / weights : texelFetch(u_open, centre, 0).r;
+    if (weights > 1e-5) o_open.x = sum / weights;
 }
 )";
 

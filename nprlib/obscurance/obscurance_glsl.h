@@ -23,7 +23,8 @@
 // kMomentsFragment: (distance, distance^2) per scene texel, level 0 of the moments' mip chain.
 //
 // kBlurFragment: one direction of a separable 9-tap Gaussian, each tap weighted down by its
-// depth difference relative to the centre's distance and by the angle between the normals.
+// depth difference relative to the centre's distance and by the angle between the normals. It
+// reads only the estimate's output, (open, distance, normal x, normal y): one fetch per tap.
 //
 // kCompositeFragment: the obscurance scaled by strength, written for multiplicative blending
 // over the scene colour (or shown alone).

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ constexpr int kUnitDepth = 0;
 constexpr int kUnitNormal = 1;
 constexpr int kUnitOpen = 2;
 constexpr int kUnitMoments = 3;
+constexpr int kMaxLineSamples = 9;  // lines9
 constexpr int kReferenceGrid = 64;  // lines per side of the reference's grid (~3,200 lines)
 // area1's mip chain of depth moments: levels 0..7, its size padded to a multiple of the last
 // level's texel (128) so that every level averages exact 2 x 2 blocks, as the shader assumes.
@@ -130,15 +132,9 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
         estimate = std::move(build.program);
         gl::bind_sampler_units(estimate, {"u_depth", "u_normal"});
         estimate.use();
-        if (is_lines(mode)) {
-            const auto rows = line_sample_table(SampleMethod::electrostatic, sample_count(mode));
-            glUniform3fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
-        } else if (is_points(mode)) {
-            const auto rows = point_sample_table(SampleMethod::electrostatic, sample_count(mode));
-            glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
-        } else if (mode == ObscuranceMode::area1) {
+        if (mode == ObscuranceMode::area1)
             glUniform1i(estimate.location("u_moments"), kUnitMoments);
-        }
+        upload_samples(mode, SampleMethod::electrostatic);
     }
     if (mode == ObscuranceMode::area1 && !moments_program_) {
         const std::string fragment = std::string(kHeader) + kSceneLibrary + kMomentsFragment;
@@ -152,7 +148,7 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
         gl::bind_sampler_units(moments_program_, {"u_depth", "u_normal"});
     }
     if (!blur_) {
-        const std::string fragment = std::string(kHeader) + kSceneLibrary + kBlurFragment;
+        const std::string fragment = std::string(kHeader) + kBlurFragment;
         gl::ProgramBuild build =
             gl::Program::build({"obscurance blur", kFullscreenVertex, fragment.c_str()}, tracker_);
         if (!build.ok()) {
@@ -160,7 +156,8 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
             return false;
         }
         blur_ = std::move(build.program);
-        gl::bind_sampler_units(blur_, {"u_depth", "u_normal", "u_open"});
+        blur_.use();
+        glUniform1i(blur_.location("u_open"), kUnitOpen);
     }
     if (!composite_) {
         const std::string fragment = std::string(kHeader) + kSceneLibrary + kCompositeFragment;
@@ -177,12 +174,35 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
     return true;
 }
 
+// The sample table of a lines or points mode, into its estimate program (in use).
+void ObscurancePass::upload_samples(ObscuranceMode mode, SampleMethod method) {
+    gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
+    uploaded_method_[static_cast<size_t>(mode)] = method;
+    if (is_lines(mode)) {
+        const auto rows = line_sample_table(method, sample_count(mode));
+        // What rotating a sample keeps: its column's half-length on the unit sphere and its
+        // weight per unit of that length.
+        std::array<float, 4 * kMaxLineSamples> lines{};
+        for (size_t i = 0; i < rows.size() && i < size_t(kMaxLineSamples); ++i) {
+            const float column =
+                std::sqrt(std::max(1.0f - rows[i].x * rows[i].x - rows[i].y * rows[i].y, 1e-4f));
+            const float values[] = {rows[i].x, rows[i].y, column, rows[i].weight / (2.0f * column)};
+            std::copy(values, values + 4, lines.begin() + std::ptrdiff_t(4 * i));
+        }
+        glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), lines.data());
+    } else if (is_points(mode)) {
+        const auto rows = point_sample_table(method, sample_count(mode));
+        glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
+    }
+}
+
 bool ObscurancePass::prepare_targets(int width, int height, std::string& error) {
     if (targets_[0].texture && width == target_width_ && height == target_height_) return true;
     for (Target& target : targets_) {
         target.texture = gl::Texture::create(tracker_);
         glBindTexture(GL_TEXTURE_2D, target.texture.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_HALF_FLOAT,
+                     nullptr);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -192,7 +212,7 @@ bool ObscurancePass::prepare_targets(int width, int height, std::string& error) 
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
                                target.texture.id(), 0);
         if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            error = "obscurance: the driver refuses an R8 render target";
+            error = "obscurance: the driver refuses an RGBA16F render target";
             for (Target& t : targets_) t = Target{};
             return false;
         }
@@ -251,6 +271,9 @@ void ObscurancePass::bind_scene(gl::Program& program, const SceneTextures& scene
 void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettings& settings) {
     gl::Program& program = estimate_[static_cast<size_t>(settings.mode)];
     bind_scene(program, scene);
+    if (uploaded_method_[static_cast<size_t>(settings.mode)] != settings.sample_method) {
+        upload_samples(settings.mode, settings.sample_method);
+    }
     glUniform2f(program.location("u_radii"), settings.radius, settings.radius2);
     glUniform1i(program.location("u_dual_minimum"), settings.dual == DualRadius::minimum);
     glUniform1f(program.location("u_thickness"), settings.thickness);
@@ -262,8 +285,8 @@ void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettin
     result_ = &targets_[0].texture;
 }
 
-void ObscurancePass::blur(const SceneTextures& scene) {
-    bind_scene(blur_, scene);
+void ObscurancePass::blur() {
+    blur_.use();
     const GLint step = blur_.location("u_step");
     for (int pass = 0; pass < 2; ++pass) {
         const Target& from = targets_[size_t(pass)];
@@ -315,7 +338,7 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
     glBindVertexArray(empty_vertex_array_.id());
     if (settings.mode == ObscuranceMode::area1) build_moments(scene);
     estimate(scene, settings);
-    if (settings.blur && settings.mode != ObscuranceMode::reference) blur(scene);
+    if (settings.blur && settings.mode != ObscuranceMode::reference) blur();
     composite(scene, settings);
     glBindVertexArray(0);
     glActiveTexture(GL_TEXTURE0);

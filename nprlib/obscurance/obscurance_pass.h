@@ -35,7 +35,8 @@ class ObscurancePass {
     // False with `error` when a program does not build (the scene is left as it was).
     bool apply(const SceneTextures& scene, const ObscuranceSettings& settings, std::string& error);
 
-    // The last result (R8, 1 = open), at the pass's resolution; 0 before the first apply.
+    // The last result (RGBA16F: open in red, 1 = open; then the texel's distance and normal
+    // x, y for the blur), at the pass's resolution; 0 before the first apply.
     GLuint open_texture() const { return result_ ? result_->id() : 0; }
     // area1's depth moments (RG32F, mipmapped: mean distance, mean squared distance); 0 until
     // area1 has run.
@@ -49,16 +50,18 @@ class ObscurancePass {
         gl::Framebuffer framebuffer;
     };
     bool build_programs(ObscuranceMode mode, std::string& error);
+    void upload_samples(ObscuranceMode mode, SampleMethod method);
     bool prepare_targets(int width, int height, std::string& error);
     bool prepare_moments(int width, int height, std::string& error);
     void build_moments(const SceneTextures& scene);
     void estimate(const SceneTextures& scene, const ObscuranceSettings& settings);
-    void blur(const SceneTextures& scene);
+    void blur();
     void composite(const SceneTextures& scene, const ObscuranceSettings& settings);
     void bind_scene(gl::Program& program, const SceneTextures& scene);
 
     gl::ObjectTracker* tracker_;
     std::array<gl::Program, kObscuranceModes> estimate_;
+    std::array<SampleMethod, kObscuranceModes> uploaded_method_{};  // per estimate program
     gl::Program blur_, composite_, moments_program_;
     gl::VertexArray empty_vertex_array_;
     std::array<Target, 2> targets_;

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string_view>
 
+#include "obscurance/sample_sets.h"
+
 namespace nq::npr::obscurance {
 
 // vo_mode: how the sphere around each pixel is sampled.
@@ -39,6 +41,9 @@ struct ObscuranceSettings {
     bool blur = true;          // edge-aware (depth and normal) bilateral blur
     bool half_resolution = false;
     bool show = false;  // vo_show: the obscurance alone, in grey
+    // vo_sample_set: whose line and point tables the estimate uses (sample_tables.h); the
+    // paper's electrostatic sets by default, the others for the error comparison.
+    SampleMethod sample_method = SampleMethod::electrostatic;
 };
 
 }  // namespace nq::npr::obscurance

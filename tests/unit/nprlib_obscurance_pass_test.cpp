@@ -325,6 +325,20 @@ TEST_F(ObscurancePassTest, TheBlurKeepsTheWallAndTheFloorApartAndSmoothsThePatte
     const float blurred_error = mean_error(blurred, expected, counted);
     EXPECT_LT(blurred_error, 0.06f);
     EXPECT_LE(blurred_error, raw_error + 0.005f);
+    // The 4x4 rotation pattern is averaged away: neighbours on the floor differ far less.
+    const auto roughness = [&](const std::vector<float>& image) {
+        double sum = 0.0;
+        int n = 0;
+        for (int y = 4; y < kSize / 4; ++y) {  // the floor, near the camera
+            for (int x = 4; x < kSize - 5; ++x) {
+                const size_t i = size_t(y) * kSize + size_t(x);
+                sum += std::abs(image[i + 1] - image[i]);
+                ++n;
+            }
+        }
+        return sum / n;
+    };
+    EXPECT_LT(roughness(blurred), 0.5 * roughness(raw));
 }
 
 TEST_F(ObscurancePassTest, SkyIsNeverDarkenedAndTheColourIsMultipliedOrShown) {
