@@ -141,5 +141,26 @@ TEST(EngineObscurance, TheShowroomIsOpenOnSkyAndFloorAndDarkerWhereModelsStand) 
     EXPECT_GT(changed, 10);
 }
 
+// One run through every style and swaps between them, in the modes with state of their own
+// (area1's moments, the reference): each picture shows the obscurance with open sky and floor
+// and dark contact, and the pass never fails.
+TEST(EngineObscurance, EveryStyleShowsItThroughSwaps) {
+    for (const char* mode : {"lines5", "area1"}) {
+        std::vector<std::string> settings = {"+vo_enable", "1", "+vo_show", "1", "+vo_mode", mode};
+        for (const char* style : {"classic", "technical", "illustrative", "classic"}) {
+            settings.insert(settings.end(), {"+r_plugin", style, "+wait", "+wait"});
+            const Shot shown = showroom_shot(settings);
+            ASSERT_EQ(shown.width, 160) << mode << " " << style;
+            int white = 0, dark = 0;
+            for (int v : shown.grey) {
+                white += v >= 245;
+                dark += v < 200;
+            }
+            EXPECT_GT(white, int(shown.grey.size()) / 2) << mode << " " << style;
+            EXPECT_GT(dark, 20) << mode << " " << style;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace nq

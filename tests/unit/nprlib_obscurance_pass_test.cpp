@@ -451,6 +451,36 @@ TEST_F(ObscurancePassTest, AreaMomentsAtAMipLevelAreTheMeansComputedHere) {
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// A scene that changes size (a resized window, a smaller viewport) gets targets and moments of
+// its own size: the floor stays open in every mode, before and after, and GL reports nothing.
+TEST_F(ObscurancePassTest, ASceneOfAnotherSizeGetsTargetsOfItsSize) {
+    build_scene({kFloor});
+    for (ObscuranceMode mode : kModes) {
+        if (mode == ObscuranceMode::reference) continue;  // slow, and no targets of its own
+        ObscuranceSettings s = settings_for(mode);
+        s.blur = true;
+        obscurance::SceneTextures scene;
+        scene.framebuffer = framebuffer_;
+        scene.depth_texture = depth_;
+        scene.normal_texture = normal_;
+        std::copy_n(glm::value_ptr(projection_), 16, scene.projection);
+        for (int side : {kSize, kSize / 2 + 3, kSize}) {
+            scene.width = scene.height = side;
+            std::string error;
+            EXPECT_TRUE(pass_.apply(scene, s, error)) << error;
+            EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << obscurance::obscurance_mode_name(mode);
+            GLint width = 0;
+            glBindTexture(GL_TEXTURE_2D, pass_.open_texture());
+            glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
+            EXPECT_EQ(width, side) << obscurance::obscurance_mode_name(mode);
+        }
+        int counted = 0;
+        const float error = mean_error(
+            run(s), [](glm::vec3, const Hit&) { return 1.0f; }, counted);
+        EXPECT_LT(error, 0.04f) << obscurance::obscurance_mode_name(mode);
+    }
+}
+
 TEST_F(ObscurancePassTest, TheModeNamesRoundTrip) {
     for (ObscuranceMode mode : kModes) {
         EXPECT_EQ(obscurance::parse_obscurance_mode(obscurance::obscurance_mode_name(mode)), mode);
