@@ -196,23 +196,34 @@ void ObscurancePass::upload_samples(ObscuranceMode mode, SampleMethod method) {
     }
 }
 
+// A render target of `levels` mip levels (linear filtering, clamped), its framebuffer on level 0.
+// False with `error` when the driver refuses it.
+bool ObscurancePass::make_target(Target& target, GLenum format, int levels, int width, int height,
+                                 std::string& error) {
+    target.texture = gl::Texture::create(tracker_);
+    glBindTexture(GL_TEXTURE_2D, target.texture.id());
+    glTexStorage2D(GL_TEXTURE_2D, levels, format, width, height);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+                    levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    target.framebuffer = gl::Framebuffer::create(tracker_);
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.texture.id(),
+                           0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) return true;
+    error = std::string("obscurance: the driver refuses a ") +
+            (format == GL_RG32F ? "RG32F" : "RGBA16F") + " render target";
+    target = Target{};
+    return false;
+}
+
+// RGBA16F: the estimate and the blur carry (open, distance, normal x, normal y).
 bool ObscurancePass::prepare_targets(int width, int height, std::string& error) {
     if (targets_[0].texture && width == target_width_ && height == target_height_) return true;
     for (Target& target : targets_) {
-        target.texture = gl::Texture::create(tracker_);
-        glBindTexture(GL_TEXTURE_2D, target.texture.id());
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_HALF_FLOAT,
-                     nullptr);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        target.framebuffer = gl::Framebuffer::create(tracker_);
-        glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                               target.texture.id(), 0);
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            error = "obscurance: the driver refuses an RGBA16F render target";
+        if (!make_target(target, GL_RGBA16F, 1, width, height, error)) {
             for (Target& t : targets_) t = Target{};
             return false;
         }
@@ -225,20 +236,7 @@ bool ObscurancePass::prepare_targets(int width, int height, std::string& error) 
 // RG32F: distance^2 reaches 4096^2, past what half floats hold.
 bool ObscurancePass::prepare_moments(int width, int height, std::string& error) {
     if (moments_.texture && width == moments_width_ && height == moments_height_) return true;
-    moments_.texture = gl::Texture::create(tracker_);
-    glBindTexture(GL_TEXTURE_2D, moments_.texture.id());
-    glTexStorage2D(GL_TEXTURE_2D, kMomentsLevels, GL_RG32F, padded(width), padded(height));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    moments_.framebuffer = gl::Framebuffer::create(tracker_);
-    glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer.id());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                           moments_.texture.id(), 0);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        error = "obscurance: the driver refuses an RG32F render target (area1)";
-        moments_ = Target{};
+    if (!make_target(moments_, GL_RG32F, kMomentsLevels, padded(width), padded(height), error)) {
         return false;
     }
     moments_width_ = width;

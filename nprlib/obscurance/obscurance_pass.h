@@ -51,6 +51,8 @@ class ObscurancePass {
     };
     bool build_programs(ObscuranceMode mode, std::string& error);
     void upload_samples(ObscuranceMode mode, SampleMethod method);
+    bool make_target(Target& target, GLenum format, int levels, int width, int height,
+                     std::string& error);
     bool prepare_targets(int width, int height, std::string& error);
     bool prepare_moments(int width, int height, std::string& error);
     void build_moments(const SceneTextures& scene);
