@@ -233,7 +233,11 @@ float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflectio
 }
 #endif
 
-// A 4x4 ordered (Bayer) pattern of 16 rotations, every other one reflected.
+// A 4x4 ordered (Bayer) pattern of 16 rotations, every other one reflected. The rotations
+// spread over the sample set's own symmetry period (2 pi / k for a set that k-fold rotation
+// maps onto itself), or a symmetric set would repeat itself: the 9 electrostatic lines (a ring
+// of 8 and the centre) turned in steps of 22.5 degrees take only 2 distinct positions.
+uniform float u_rotation_span;
 const int kBayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
 void pixel_pattern(out mat2 rotation, out float reflection) {
 #ifdef VO_REFERENCE
@@ -242,7 +246,7 @@ void pixel_pattern(out mat2 rotation, out float reflection) {
 #else
     ivec2 q = ivec2(gl_FragCoord.xy) & 3;
     int bayer = kBayer[q.y * 4 + q.x];
-    float angle = (float(bayer) + 0.5) * (6.2831853 / 16.0);
+    float angle = (float(bayer) + 0.5) * (u_rotation_span / 16.0);
     float c = cos(angle), s = sin(angle);
     rotation = mat2(c, s, -s, c);
     reflection = (bayer & 1) == 0 ? 1.0 : -1.0;

@@ -174,10 +174,42 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
     return true;
 }
 
-// The sample table of a lines or points mode, into its estimate program (in use).
+// The largest k <= 12 such that turning the set by 2 pi / k about the view axis maps every
+// sample onto one of the set (within 0.02): its rotational symmetry order, 1 for none.
+template <class Row>
+float height_of(const Row& row) {
+    if constexpr (requires { row.z; }) {
+        return row.z;  // a point's: the turn keeps it
+    } else {
+        return 0.0f;  // a line's runs through the whole sphere
+    }
+}
+
+template <class Row>
+int symmetry_order(std::span<const Row> rows) {
+    for (int k = 12; k > 1; --k) {
+        const float angle = 6.2831853f / float(k);
+        const float c = std::cos(angle), s = std::sin(angle);
+        const bool maps = std::all_of(rows.begin(), rows.end(), [&](const Row& a) {
+            const float x = c * a.x - s * a.y, y = s * a.x + c * a.y;
+            return std::any_of(rows.begin(), rows.end(), [&](const Row& b) {
+                return std::abs(b.x - x) + std::abs(b.y - y) +
+                           std::abs(height_of(b) - height_of(a)) <
+                       0.02f;
+            });
+        });
+        if (maps) return k;
+    }
+    return 1;
+}
+
+// The sample table of a lines or points mode, into its estimate program (in use), with the
+// span its per-pixel rotations cover.
 void ObscurancePass::upload_samples(ObscuranceMode mode, SampleMethod method) {
     gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
     uploaded_method_[static_cast<size_t>(mode)] = method;
+    constexpr float kFullTurn = 6.2831853f;
+    float span = kFullTurn;
     if (is_lines(mode)) {
         const auto rows = line_sample_table(method, sample_count(mode));
         // What rotating a sample keeps: its column's half-length on the unit sphere and its
@@ -190,10 +222,13 @@ void ObscurancePass::upload_samples(ObscuranceMode mode, SampleMethod method) {
             std::copy(values, values + 4, lines.begin() + std::ptrdiff_t(4 * i));
         }
         glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), lines.data());
+        span = kFullTurn / float(symmetry_order(rows));
     } else if (is_points(mode)) {
         const auto rows = point_sample_table(method, sample_count(mode));
         glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
+        span = kFullTurn / float(symmetry_order(rows));
     }
+    glUniform1f(estimate.location("u_rotation_span"), span);
 }
 
 // A render target of `levels` mip levels (linear filtering, clamped), its framebuffer on level 0.
