@@ -6,7 +6,8 @@
 #          ..., then the next resolution), one run each: fps, and the obscurance pass's GPU time
 #          from the engine's timer queries (timedemo's "gpu obscurance" line).
 #   error  the same paused demo.dem frames with `vo_show 1` in every mode (the sampled ones also
-#          with Poisson-disk and Lloyd sets, vo_sample_set) and in `reference` (64 x 64
+#          with Poisson-disk and Lloyd sets, vo_sample_set; and electrostatic sets of the
+#          neighbouring counts, vo_sample_count) and in `reference` (64 x 64
 #          stratified lines, not randomised or blurred), then a stretch of consecutive frames
 #          for flicker; at the stills the frame's geometry too (vo_dump_scene), ray-traced by
 #          vo_reference (Embree); demos/obscurance_error.py computes RMSE and SSIM against both
@@ -86,12 +87,21 @@ if [ "$error" = 1 ]; then
     # plain Poisson-disk and Lloyd-relaxed sets too, and the reference last.
     shots=()
     for m in lines5 lines9 points12 points33 area1; do
-        shots+=("$m|vo_mode $m; vo_sample_set electrostatic")
+        shots+=("$m|vo_mode $m; vo_sample_set electrostatic; vo_sample_count 0")
     done
     for m in lines5 lines9 points12 points33; do
-        for set in poisson lloyd; do shots+=("${m}_$set|vo_mode $m; vo_sample_set $set"); done
+        for set in poisson lloyd; do
+            shots+=("${m}_$set|vo_mode $m; vo_sample_set $set; vo_sample_count 0")
+        done
     done
-    shots+=("reference|vo_mode reference")
+    # The paper's counts' neighbours (electrostatic sets).
+    for n in 4 6 8 10; do
+        shots+=("lines$n|vo_mode lines5; vo_sample_set electrostatic; vo_sample_count $n")
+    done
+    for n in 11 13 32 34; do
+        shots+=("points$n|vo_mode points12; vo_sample_set electrostatic; vo_sample_count $n")
+    done
+    shots+=("reference|vo_mode reference; vo_sample_count 0")
     stills="300 760 1200"
     stretch=$(seq 700 709)
     frame_commands() {  # frame -> the commands that shoot every configuration there

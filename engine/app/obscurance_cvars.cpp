@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "obscurance/sample_tables.h"
+
 namespace nq {
 
 using npr::obscurance::DualRadius;
@@ -49,6 +51,10 @@ void ObscuranceCvars::register_cvars(CvarRegistry& cvars,
          "the line and point sets: electrostatic (the paper's), poisson or lloyd (for comparison)",
          {},
          {}});
+    cvars_[sample_count] =
+        number("vo_sample_count", "0", 0.0f, float(npr::obscurance::kMaxPointSamples),
+               "lines or points instead of the mode's count (0 = the mode's; 4, 6, 8, 10 lines "
+               "and 11, 13, 32, 34 points have electrostatic sets)");
     read();
 }
 
@@ -94,6 +100,14 @@ void ObscuranceCvars::read() {
             warn_("vo_sample_set \"" + cvars_[sample_set]->string() +
                   "\" is not one of electrostatic, poisson, lloyd; using electrostatic");
         }
+    }
+    s.sample_count = int(cvars_[sample_count]->value());
+    if (s.sample_count > 0 && npr::obscurance::effective_sample_count(s) != s.sample_count &&
+        (npr::obscurance::samples_lines(s.mode) || npr::obscurance::samples_points(s.mode)) &&
+        warn_) {
+        warn_("vo_sample_count " + std::to_string(s.sample_count) + ": no " +
+              cvars_[sample_set]->string() + " set of that count for " +
+              std::string(npr::obscurance::obscurance_mode_name(s.mode)) + "; it takes its own");
     }
 }
 

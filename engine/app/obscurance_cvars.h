@@ -34,6 +34,7 @@ class ObscuranceCvars {
         half,
         show,
         sample_set,
+        sample_count,
         count
     };
     void read();

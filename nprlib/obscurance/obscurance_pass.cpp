@@ -19,7 +19,6 @@ constexpr int kUnitDepth = 0;
 constexpr int kUnitNormal = 1;
 constexpr int kUnitOpen = 2;
 constexpr int kUnitMoments = 3;
-constexpr int kMaxLineSamples = 9;  // lines9
 constexpr int kReferenceGrid = 64;  // lines per side of the reference's grid (~3,200 lines)
 // area1's mip chain of depth moments: levels 0..7, its size padded to a multiple of the last
 // level's texel (128) so that every level averages exact 2 x 2 blocks, as the shader assumes.
@@ -37,36 +36,11 @@ void set_moments_scale(gl::Program& program, const SceneTextures& scene) {
                 float(scene.height) / float(padded(scene.height)));
 }
 
-bool is_lines(ObscuranceMode mode) {
-    return mode == ObscuranceMode::lines5 || mode == ObscuranceMode::lines9;
-}
-
-bool is_points(ObscuranceMode mode) {
-    return mode == ObscuranceMode::points12 || mode == ObscuranceMode::points33;
-}
-
-int sample_count(ObscuranceMode mode) {
-    switch (mode) {
-        case ObscuranceMode::lines5:
-            return 5;
-        case ObscuranceMode::lines9:
-            return 9;
-        case ObscuranceMode::points12:
-            return 12;
-        case ObscuranceMode::points33:
-            return 33;
-        case ObscuranceMode::area1:
-            return 1;
-        case ObscuranceMode::reference:
-            return kReferenceGrid;
-    }
-    return 5;
-}
-
-std::string estimate_defines(ObscuranceMode mode) {
-    const std::string count = std::to_string(sample_count(mode));
-    if (is_lines(mode)) return "#define VO_LINES " + count + "\n";
-    if (is_points(mode)) return "#define VO_POINTS " + count + "\n";
+std::string estimate_defines(ObscuranceMode mode, int samples) {
+    const std::string count =
+        std::to_string(mode == ObscuranceMode::reference ? kReferenceGrid : samples);
+    if (samples_lines(mode)) return "#define VO_LINES " + count + "\n";
+    if (samples_points(mode)) return "#define VO_POINTS " + count + "\n";
     if (mode == ObscuranceMode::area1) {
         return "#define VO_AREA\n#define VO_MOMENTS_LEVELS " + std::to_string(kMomentsLevels) +
                "\n";
@@ -118,11 +92,13 @@ void ObscurancePass::reset() {
     target_width_ = target_height_ = 0;
 }
 
-bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
+bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::string& error) {
     gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
+    SampleTableKey& uploaded = uploaded_[static_cast<size_t>(mode)];
+    if (estimate && uploaded.count != samples) estimate.reset();  // another vo_sample_count
     if (!estimate) {
-        const std::string fragment =
-            std::string(kHeader) + estimate_defines(mode) + kSceneLibrary + kEstimateFragment;
+        const std::string fragment = std::string(kHeader) + estimate_defines(mode, samples) +
+                                     kSceneLibrary + kEstimateFragment;
         gl::ProgramBuild build = gl::Program::build(
             {"obscurance estimate", kFullscreenVertex, fragment.c_str()}, tracker_);
         if (!build.ok()) {
@@ -134,7 +110,7 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, std::string& error) {
         estimate.use();
         if (mode == ObscuranceMode::area1)
             glUniform1i(estimate.location("u_moments"), kUnitMoments);
-        upload_samples(mode, SampleMethod::electrostatic);
+        upload_samples(mode, {SampleMethod::electrostatic, samples});
     }
     if (mode == ObscuranceMode::area1 && !moments_program_) {
         const std::string fragment = std::string(kHeader) + kSceneLibrary + kMomentsFragment;
@@ -205,13 +181,14 @@ int symmetry_order(std::span<const Row> rows) {
 
 // The sample table of a lines or points mode, into its estimate program (in use), with the
 // span its per-pixel rotations cover.
-void ObscurancePass::upload_samples(ObscuranceMode mode, SampleMethod method) {
+void ObscurancePass::upload_samples(ObscuranceMode mode, SampleTableKey table) {
     gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
-    uploaded_method_[static_cast<size_t>(mode)] = method;
+    uploaded_[static_cast<size_t>(mode)] = table;
+    const SampleMethod method = table.method;
     constexpr float kFullTurn = 6.2831853f;
     float span = kFullTurn;
-    if (is_lines(mode)) {
-        const auto rows = line_sample_table(method, sample_count(mode));
+    if (samples_lines(mode)) {
+        const auto rows = line_sample_table(method, table.count);
         // What rotating a sample keeps: its column's half-length on the unit sphere and its
         // weight per unit of that length.
         std::array<float, 4 * kMaxLineSamples> lines{};
@@ -223,8 +200,8 @@ void ObscurancePass::upload_samples(ObscuranceMode mode, SampleMethod method) {
         }
         glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), lines.data());
         span = kFullTurn / float(symmetry_order(rows));
-    } else if (is_points(mode)) {
-        const auto rows = point_sample_table(method, sample_count(mode));
+    } else if (samples_points(mode)) {
+        const auto rows = point_sample_table(method, table.count);
         glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
         span = kFullTurn / float(symmetry_order(rows));
     }
@@ -304,8 +281,9 @@ void ObscurancePass::bind_scene(gl::Program& program, const SceneTextures& scene
 void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettings& settings) {
     gl::Program& program = estimate_[static_cast<size_t>(settings.mode)];
     bind_scene(program, scene);
-    if (uploaded_method_[static_cast<size_t>(settings.mode)] != settings.sample_method) {
-        upload_samples(settings.mode, settings.sample_method);
+    const SampleTableKey wanted{settings.sample_method, effective_sample_count(settings)};
+    if (uploaded_[static_cast<size_t>(settings.mode)] != wanted) {
+        upload_samples(settings.mode, wanted);
     }
     glUniform2f(program.location("u_radii"), settings.radius, settings.radius2);
     glUniform1i(program.location("u_dual_minimum"), settings.dual == DualRadius::minimum);
@@ -355,7 +333,7 @@ void ObscurancePass::composite(const SceneTextures& scene, const ObscuranceSetti
 bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings& settings,
                            std::string& error) {
     if (scene.width <= 0 || scene.height <= 0) return true;
-    if (!build_programs(settings.mode, error)) return false;
+    if (!build_programs(settings.mode, effective_sample_count(settings), error)) return false;
     const int width = settings.half_resolution ? (scene.width + 1) / 2 : scene.width;
     const int height = settings.half_resolution ? (scene.height + 1) / 2 : scene.height;
     SavedState saved;

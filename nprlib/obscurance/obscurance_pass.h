@@ -49,8 +49,14 @@ class ObscurancePass {
         gl::Texture texture;
         gl::Framebuffer framebuffer;
     };
-    bool build_programs(ObscuranceMode mode, std::string& error);
-    void upload_samples(ObscuranceMode mode, SampleMethod method);
+    // Which table an estimate program holds.
+    struct SampleTableKey {
+        SampleMethod method = SampleMethod::electrostatic;
+        int count = 0;
+        bool operator==(const SampleTableKey&) const = default;
+    };
+    bool build_programs(ObscuranceMode mode, int samples, std::string& error);
+    void upload_samples(ObscuranceMode mode, SampleTableKey table);
     bool make_target(Target& target, GLenum format, int levels, int width, int height,
                      std::string& error);
     bool prepare_targets(int width, int height, std::string& error);
@@ -63,7 +69,7 @@ class ObscurancePass {
 
     gl::ObjectTracker* tracker_;
     std::array<gl::Program, kObscuranceModes> estimate_;
-    std::array<SampleMethod, kObscuranceModes> uploaded_method_{};  // per estimate program
+    std::array<SampleTableKey, kObscuranceModes> uploaded_{};  // per estimate program
     gl::Program blur_, composite_, moments_program_;
     gl::VertexArray empty_vertex_array_;
     std::array<Target, 2> targets_;

@@ -1,5 +1,7 @@
 #include "obscurance/obscurance_settings.h"
 
+#include "obscurance/sample_tables.h"
+
 namespace nq::npr::obscurance {
 
 std::optional<ObscuranceMode> parse_obscurance_mode(std::string_view name) {
@@ -26,6 +28,41 @@ std::string_view obscurance_mode_name(ObscuranceMode mode) {
             return "reference";
     }
     return "lines5";
+}
+
+bool samples_lines(ObscuranceMode mode) {
+    return mode == ObscuranceMode::lines5 || mode == ObscuranceMode::lines9;
+}
+
+bool samples_points(ObscuranceMode mode) {
+    return mode == ObscuranceMode::points12 || mode == ObscuranceMode::points33;
+}
+
+int effective_sample_count(const ObscuranceSettings& settings) {
+    int own = 1;
+    switch (settings.mode) {
+        case ObscuranceMode::lines5:
+            own = 5;
+            break;
+        case ObscuranceMode::lines9:
+            own = 9;
+            break;
+        case ObscuranceMode::points12:
+            own = 12;
+            break;
+        case ObscuranceMode::points33:
+            own = 33;
+            break;
+        case ObscuranceMode::area1:
+        case ObscuranceMode::reference:
+            return 1;
+    }
+    const int wanted = settings.sample_count;
+    if (wanted <= 0 || wanted == own) return own;
+    const bool has_table = samples_lines(settings.mode)
+                               ? !line_sample_table(settings.sample_method, wanted).empty()
+                               : !point_sample_table(settings.sample_method, wanted).empty();
+    return has_table ? wanted : own;
 }
 
 }  // namespace nq::npr::obscurance

@@ -25,6 +25,8 @@ inline constexpr int kObscuranceModes = 6;
 
 std::optional<ObscuranceMode> parse_obscurance_mode(std::string_view name);
 std::string_view obscurance_mode_name(ObscuranceMode mode);
+bool samples_lines(ObscuranceMode mode);   // lines5, lines9
+bool samples_points(ObscuranceMode mode);  // points12, points33
 
 // How two radii combine (vo_radius2 > 0): their obscurances multiplied, or the smaller taken.
 enum class DualRadius { product, minimum };
@@ -44,6 +46,14 @@ struct ObscuranceSettings {
     // vo_sample_set: whose line and point tables the estimate uses (sample_tables.h); the
     // paper's electrostatic sets by default, the others for the error comparison.
     SampleMethod sample_method = SampleMethod::electrostatic;
+    // vo_sample_count: lines or points taken instead of the mode's own count (0 = its own), for
+    // comparing the paper's counts with their neighbours; only counts with a table apply.
+    int sample_count = 0;
 };
+
+// The lines or points a mode takes with these settings: vo_sample_count when the tables hold a
+// set of that count for the mode's kind and vo_sample_set, otherwise the mode's own (1 for
+// area1 and the reference, which take no table).
+int effective_sample_count(const ObscuranceSettings& settings);
 
 }  // namespace nq::npr::obscurance

@@ -9,6 +9,15 @@ namespace {
 #include "obscurance/tables/electrostatic_lines_9.inc"
 #include "obscurance/tables/electrostatic_points_12.inc"
 #include "obscurance/tables/electrostatic_points_33.inc"
+// The paper's counts' neighbours, electrostatic only: for checking that 5, 9, 12 and 33 beat them.
+#include "obscurance/tables/electrostatic_lines_10.inc"
+#include "obscurance/tables/electrostatic_lines_4.inc"
+#include "obscurance/tables/electrostatic_lines_6.inc"
+#include "obscurance/tables/electrostatic_lines_8.inc"
+#include "obscurance/tables/electrostatic_points_11.inc"
+#include "obscurance/tables/electrostatic_points_13.inc"
+#include "obscurance/tables/electrostatic_points_32.inc"
+#include "obscurance/tables/electrostatic_points_34.inc"
 #include "obscurance/tables/lloyd_lines_5.inc"
 #include "obscurance/tables/lloyd_lines_9.inc"
 #include "obscurance/tables/lloyd_points_12.inc"
@@ -27,6 +36,10 @@ struct TableEntry {
 constexpr TableEntry<LineSampleRow> kLineTables[] = {
     {SampleMethod::electrostatic, kElectrostaticLines5},
     {SampleMethod::electrostatic, kElectrostaticLines9},
+    {SampleMethod::electrostatic, kElectrostaticLines4},
+    {SampleMethod::electrostatic, kElectrostaticLines6},
+    {SampleMethod::electrostatic, kElectrostaticLines8},
+    {SampleMethod::electrostatic, kElectrostaticLines10},
     {SampleMethod::lloyd, kLloydLines5},
     {SampleMethod::lloyd, kLloydLines9},
     {SampleMethod::poisson, kPoissonLines5},
@@ -36,6 +49,10 @@ constexpr TableEntry<LineSampleRow> kLineTables[] = {
 constexpr TableEntry<PointSampleRow> kPointTables[] = {
     {SampleMethod::electrostatic, kElectrostaticPoints12},
     {SampleMethod::electrostatic, kElectrostaticPoints33},
+    {SampleMethod::electrostatic, kElectrostaticPoints11},
+    {SampleMethod::electrostatic, kElectrostaticPoints13},
+    {SampleMethod::electrostatic, kElectrostaticPoints32},
+    {SampleMethod::electrostatic, kElectrostaticPoints34},
     {SampleMethod::lloyd, kLloydPoints12},
     {SampleMethod::lloyd, kLloydPoints33},
     {SampleMethod::poisson, kPoissonPoints12},

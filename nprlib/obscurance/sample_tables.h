@@ -2,7 +2,9 @@
 // (nprlib/obscurance/tools; regenerate_tables.sh there rewrites tables/*.inc) at full
 // resolution: line samples on the unit disk (5 and 9) and point samples in the unit ball
 // (12 and 33) by the electrostatic method, and the same counts by Lloyd relaxation and plain
-// Poisson-disk sampling for comparison. Weights sum to 1 within each set.
+// Poisson-disk sampling for comparison; electrostatic sets of the neighbouring counts too (4, 6,
+// 8, 10 lines; 11, 13, 32, 34 points), to check the paper's finding that its counts beat their
+// neighbours. Weights sum to 1 within each set.
 #pragma once
 
 #include <span>
@@ -22,6 +24,11 @@ struct PointSampleRow {
 // The counts with a table, for every method.
 inline constexpr int kLineTableCounts[] = {5, 9};
 inline constexpr int kPointTableCounts[] = {12, 33};
+// The counts with an electrostatic table only.
+inline constexpr int kNeighbourLineCounts[] = {4, 6, 8, 10};
+inline constexpr int kNeighbourPointCounts[] = {11, 13, 32, 34};
+inline constexpr int kMaxLineSamples = 10;
+inline constexpr int kMaxPointSamples = 34;
 
 // The committed set for method and count; an empty span when there is no table for them.
 std::span<const LineSampleRow> line_sample_table(SampleMethod method, int count);

@@ -481,6 +481,32 @@ TEST_F(ObscurancePassTest, ASceneOfAnotherSizeGetsTargetsOfItsSize) {
     }
 }
 
+// vo_sample_count: the paper's counts' neighbours run through the same estimate (rebuilt for
+// their count) and measure the crease as well; a count without a table takes the mode's own.
+TEST_F(ObscurancePassTest, TheNeighbouringCountsMeasureTheCreaseToo) {
+    build_scene({kFloor, kWall});
+    ObscuranceSettings s = settings_for(ObscuranceMode::lines5);
+    s.thickness = 0.0f;
+    const auto expected = [&](glm::vec3 p, const Hit& hit) -> std::optional<float> {
+        return open_near_wall(distance_to_crease(p, hit), s.radius);
+    };
+    const std::vector<float> own = run(s);
+    for (int count : {4, 6, 8, 10, 11, 13, 32, 34}) {
+        s.mode = count <= 10 ? ObscuranceMode::lines5 : ObscuranceMode::points12;
+        s.sample_count = count;
+        ASSERT_EQ(obscurance::effective_sample_count(s), count);
+        int counted = 0;
+        EXPECT_LT(mean_error(run(s), expected, counted), 0.07f) << count;
+    }
+    s.mode = ObscuranceMode::lines5;
+    s.sample_count = 7;  // no table of 7 lines
+    EXPECT_EQ(obscurance::effective_sample_count(s), 5);
+    EXPECT_EQ(run(s), own);
+    s.sample_method = obscurance::SampleMethod::poisson;
+    s.sample_count = 4;  // neighbours are electrostatic only
+    EXPECT_EQ(obscurance::effective_sample_count(s), 5);
+}
+
 TEST_F(ObscurancePassTest, TheModeNamesRoundTrip) {
     for (ObscuranceMode mode : kModes) {
         EXPECT_EQ(obscurance::parse_obscurance_mode(obscurance::obscurance_mode_name(mode)), mode);

@@ -274,6 +274,31 @@ TEST(ObscuranceSampleTables, LineWeightsAreTheirVoronoiVolumes) {
     }
 }
 
+TEST(ObscuranceSampleTables, TheNeighbouringCountsHaveElectrostaticTablesOnly) {
+    for (int count : kNeighbourLineCounts) {
+        SCOPED_TRACE("lines " + std::to_string(count));
+        const std::span<const LineSampleRow> rows =
+            line_sample_table(SampleMethod::electrostatic, count);
+        ASSERT_EQ(rows.size(), static_cast<size_t>(count));
+        const std::vector<double> volumes = brute_force_line_volumes(rows, kLineCheckResolution);
+        for (size_t s = 0; s < rows.size(); ++s) {
+            EXPECT_NEAR(rows[s].weight, volumes[s], kWeightTolerance) << "sample " << s;
+        }
+        EXPECT_TRUE(line_sample_table(SampleMethod::poisson, count).empty());
+    }
+    for (int count : kNeighbourPointCounts) {
+        SCOPED_TRACE("points " + std::to_string(count));
+        const std::span<const PointSampleRow> rows =
+            point_sample_table(SampleMethod::electrostatic, count);
+        ASSERT_EQ(rows.size(), static_cast<size_t>(count));
+        const std::vector<double> volumes = brute_force_point_volumes(rows, kPointCheckResolution);
+        for (size_t s = 0; s < rows.size(); ++s) {
+            EXPECT_NEAR(rows[s].weight, volumes[s], kWeightTolerance) << "sample " << s;
+        }
+        EXPECT_TRUE(point_sample_table(SampleMethod::lloyd, count).empty());
+    }
+}
+
 TEST(ObscuranceSampleTables, PointWeightsAreTheirVoronoiVolumes) {
     for (SampleMethod method : kMethods) {
         for (int count : kPointTableCounts) {
@@ -318,7 +343,8 @@ TEST(ObscuranceSampleTables, ElectrostaticTablesAreEven) {
 }
 
 TEST(ObscuranceSampleTables, MissingTablesAreEmpty) {
-    EXPECT_TRUE(line_sample_table(SampleMethod::electrostatic, 6).empty());
+    EXPECT_TRUE(line_sample_table(SampleMethod::electrostatic, 7).empty());
+    EXPECT_TRUE(line_sample_table(SampleMethod::poisson, 6).empty());
     EXPECT_TRUE(point_sample_table(SampleMethod::lloyd, 5).empty());
     EXPECT_FALSE(point_sample_table(SampleMethod::lloyd, 33).empty());
 }
