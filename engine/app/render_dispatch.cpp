@@ -1,12 +1,12 @@
 #include "app/render_dispatch.h"
 
 #include <algorithm>
-#include <fstream>
 #include <utility>
 
 #include <epoxy/gl.h>
 
 #include "classic/classic_renderer.h"
+#include "common/file_io.h"
 #include "obscurance/scene_triangles.h"
 #include "video/frame_trace.h"
 #include "video/gpu_pass_timers.h"
@@ -122,14 +122,11 @@ void RenderDispatch::dump_scene(const nqr_frame& frame) {
     const std::string path = std::exchange(dump_path_, {});
     const npr::obscurance::ObscuranceScene scene =
         npr::obscurance::collect_scene(frame, plugins_.models());
-    const std::vector<uint8_t> bytes = npr::obscurance::encode_scene(scene);
-    std::ofstream out(path, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    out.close();
+    const std::string error = write_file(path, npr::obscurance::encode_scene(scene));
     if (dump_done_) {
-        dump_done_(out ? "vo_dump_scene: wrote " + path + " (" +
-                             std::to_string(scene.triangles.size()) + " triangles)"
-                       : "vo_dump_scene: cannot write " + path);
+        dump_done_(error.empty() ? "vo_dump_scene: wrote " + path + " (" +
+                                       std::to_string(scene.triangles.size()) + " triangles)"
+                                 : "vo_dump_scene: " + error);
     }
 }
 

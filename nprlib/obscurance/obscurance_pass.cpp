@@ -189,6 +189,7 @@ void ObscurancePass::upload_samples(ObscuranceMode mode, SampleTableKey table) {
     float span = kFullTurn;
     if (samples_lines(mode)) {
         const auto rows = line_sample_table(method, table.count);
+        if (rows.empty()) return;  // effective_sample_count only asks for tables that exist
         // What rotating a sample keeps: its column's half-length on the unit sphere and its
         // weight per unit of that length.
         std::array<float, 4 * kMaxLineSamples> lines{};
@@ -202,6 +203,7 @@ void ObscurancePass::upload_samples(ObscuranceMode mode, SampleTableKey table) {
         span = kFullTurn / float(symmetry_order(rows));
     } else if (samples_points(mode)) {
         const auto rows = point_sample_table(method, table.count);
+        if (rows.empty()) return;
         glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
         span = kFullTurn / float(symmetry_order(rows));
     }
