@@ -76,7 +76,13 @@ if [ "$cost" = 1 ]; then
                 +timedemo demo +quit
             fps=$(awk '/frames .* seconds .* fps/ {print $5}' "$log" | tail -1)
             gpu=$(awk '/gpu obscurance/ {print $3}' "$log" | tail -1)
-            printf '%s\t%s\t%s\t%s\n' "$res" "$name" "${fps:-failed}" "${gpu:-0}" |
+            # A pass that did not build leaves the frame rate of a run without it: no number.
+            if grep -q "obscurance off" "$log" || { [ "$name" != off ] && [ -z "$gpu" ]; }; then
+                fps=""
+                gpu=""
+            fi
+            [ "$name" = off ] && gpu=${gpu:-0}
+            printf '%s\t%s\t%s\t%s\n' "$res" "$name" "${fps:-failed}" "${gpu:-failed}" |
                 tee -a "$out/cost.tsv"
         done
     done

@@ -92,6 +92,20 @@ void ObscurancePass::reset() {
     target_width_ = target_height_ = 0;
 }
 
+// A full-screen program from a fragment source, into `program`; false with `error` when it
+// does not build.
+bool ObscurancePass::build_fullscreen(gl::Program& program, const char* name,
+                                      const std::string& fragment, std::string& error) {
+    gl::ProgramBuild build =
+        gl::Program::build({name, kFullscreenVertex, fragment.c_str()}, tracker_);
+    if (!build.ok()) {
+        error = build.error;
+        return false;
+    }
+    program = std::move(build.program);
+    return true;
+}
+
 bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::string& error) {
     gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
     SampleTableKey& uploaded = uploaded_[static_cast<size_t>(mode)];
@@ -99,13 +113,7 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::strin
     if (!estimate) {
         const std::string fragment = std::string(kHeader) + estimate_defines(mode, samples) +
                                      kSceneLibrary + kEstimateFragment;
-        gl::ProgramBuild build = gl::Program::build(
-            {"obscurance estimate", kFullscreenVertex, fragment.c_str()}, tracker_);
-        if (!build.ok()) {
-            error = build.error;
-            return false;
-        }
-        estimate = std::move(build.program);
+        if (!build_fullscreen(estimate, "obscurance estimate", fragment, error)) return false;
         gl::bind_sampler_units(estimate, {"u_depth", "u_normal"});
         estimate.use();
         if (mode == ObscuranceMode::area1)
@@ -113,37 +121,25 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::strin
         upload_samples(mode, {SampleMethod::electrostatic, samples});
     }
     if (mode == ObscuranceMode::area1 && !moments_program_) {
-        const std::string fragment = std::string(kHeader) + kSceneLibrary + kMomentsFragment;
-        gl::ProgramBuild build = gl::Program::build(
-            {"obscurance moments", kFullscreenVertex, fragment.c_str()}, tracker_);
-        if (!build.ok()) {
-            error = build.error;
+        if (!build_fullscreen(moments_program_, "obscurance moments",
+                              std::string(kHeader) + kSceneLibrary + kMomentsFragment, error)) {
             return false;
         }
-        moments_program_ = std::move(build.program);
         gl::bind_sampler_units(moments_program_, {"u_depth", "u_normal"});
     }
     if (!blur_) {
-        const std::string fragment = std::string(kHeader) + kBlurFragment;
-        gl::ProgramBuild build =
-            gl::Program::build({"obscurance blur", kFullscreenVertex, fragment.c_str()}, tracker_);
-        if (!build.ok()) {
-            error = build.error;
+        if (!build_fullscreen(blur_, "obscurance blur", std::string(kHeader) + kBlurFragment,
+                              error)) {
             return false;
         }
-        blur_ = std::move(build.program);
         blur_.use();
         glUniform1i(blur_.location("u_open"), kUnitOpen);
     }
     if (!composite_) {
-        const std::string fragment = std::string(kHeader) + kSceneLibrary + kCompositeFragment;
-        gl::ProgramBuild build = gl::Program::build(
-            {"obscurance composite", kFullscreenVertex, fragment.c_str()}, tracker_);
-        if (!build.ok()) {
-            error = build.error;
+        if (!build_fullscreen(composite_, "obscurance composite",
+                              std::string(kHeader) + kSceneLibrary + kCompositeFragment, error)) {
             return false;
         }
-        composite_ = std::move(build.program);
         gl::bind_sampler_units(composite_, {"u_depth", "u_normal", "u_open"});
     }
     if (!empty_vertex_array_) empty_vertex_array_ = gl::VertexArray::create(tracker_);
@@ -280,10 +276,11 @@ void ObscurancePass::bind_scene(gl::Program& program, const SceneTextures& scene
     bind_texture(kUnitNormal, scene.normal_texture);
 }
 
-void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettings& settings) {
+void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettings& settings,
+                              int samples) {
     gl::Program& program = estimate_[static_cast<size_t>(settings.mode)];
     bind_scene(program, scene);
-    const SampleTableKey wanted{settings.sample_method, effective_sample_count(settings)};
+    const SampleTableKey wanted{settings.sample_method, samples};
     if (uploaded_[static_cast<size_t>(settings.mode)] != wanted) {
         upload_samples(settings.mode, wanted);
     }
@@ -335,7 +332,8 @@ void ObscurancePass::composite(const SceneTextures& scene, const ObscuranceSetti
 bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings& settings,
                            std::string& error) {
     if (scene.width <= 0 || scene.height <= 0) return true;
-    if (!build_programs(settings.mode, effective_sample_count(settings), error)) return false;
+    const int samples = effective_sample_count(settings);
+    if (!build_programs(settings.mode, samples, error)) return false;
     const int width = settings.half_resolution ? (scene.width + 1) / 2 : scene.width;
     const int height = settings.half_resolution ? (scene.height + 1) / 2 : scene.height;
     SavedState saved;
@@ -350,7 +348,7 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
     glDisable(GL_CULL_FACE);
     glBindVertexArray(empty_vertex_array_.id());
     if (settings.mode == ObscuranceMode::area1) build_moments(scene);
-    estimate(scene, settings);
+    estimate(scene, settings, samples);
     if (settings.blur && settings.mode != ObscuranceMode::reference) blur();
     composite(scene, settings);
     glBindVertexArray(0);

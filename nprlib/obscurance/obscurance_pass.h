@@ -55,6 +55,8 @@ class ObscurancePass {
         int count = 0;
         bool operator==(const SampleTableKey&) const = default;
     };
+    bool build_fullscreen(gl::Program& program, const char* name, const std::string& fragment,
+                          std::string& error);
     bool build_programs(ObscuranceMode mode, int samples, std::string& error);
     void upload_samples(ObscuranceMode mode, SampleTableKey table);
     bool make_target(Target& target, GLenum format, int levels, int width, int height,
@@ -62,7 +64,7 @@ class ObscurancePass {
     bool prepare_targets(int width, int height, std::string& error);
     bool prepare_moments(int width, int height, std::string& error);
     void build_moments(const SceneTextures& scene);
-    void estimate(const SceneTextures& scene, const ObscuranceSettings& settings);
+    void estimate(const SceneTextures& scene, const ObscuranceSettings& settings, int samples);
     void blur();
     void composite(const SceneTextures& scene, const ObscuranceSettings& settings);
     void bind_scene(gl::Program& program, const SceneTextures& scene);

@@ -39,24 +39,10 @@ bool samples_points(ObscuranceMode mode) {
 }
 
 int effective_sample_count(const ObscuranceSettings& settings) {
-    int own = 1;
-    switch (settings.mode) {
-        case ObscuranceMode::lines5:
-            own = 5;
-            break;
-        case ObscuranceMode::lines9:
-            own = 9;
-            break;
-        case ObscuranceMode::points12:
-            own = 12;
-            break;
-        case ObscuranceMode::points33:
-            own = 33;
-            break;
-        case ObscuranceMode::area1:
-        case ObscuranceMode::reference:
-            return 1;
-    }
+    // The modes' own counts, in ObscuranceMode's order (area1 and the reference take no table).
+    constexpr int kOwnCount[kObscuranceModes] = {5, 9, 12, 33, 1, 1};
+    const int own = kOwnCount[static_cast<int>(settings.mode)];
+    if (!samples_lines(settings.mode) && !samples_points(settings.mode)) return own;
     const int wanted = settings.sample_count;
     if (wanted <= 0 || wanted == own) return own;
     const bool has_table = samples_lines(settings.mode)
