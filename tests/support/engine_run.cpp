@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "support/build_paths.h"
+#include "support/raw_bytes.h"
 
 extern char** environ;
 
@@ -38,13 +39,6 @@ constexpr bool kAddressSanitizer = false;
 #else
 constexpr bool kAddressSanitizer = false;
 #endif
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::string variable_name(const std::string& entry) {
     return entry.substr(0, entry.find('='));
@@ -133,7 +127,7 @@ std::string ProcessResult::describe() const {
 
 ProcessResult run_process(const std::string& program, const std::vector<std::string>& args,
                           const std::vector<std::string>& env, double timeout_seconds,
-                          const std::string& capture_dir) {
+                          const std::string& capture_dir, const std::string& cwd) {
     ProcessResult result;
     const std::string out_path = capture_dir + "/stdout.txt";
     const std::string err_path = capture_dir + "/stderr.txt";
@@ -145,6 +139,7 @@ ProcessResult run_process(const std::string& program, const std::vector<std::str
                                      O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(),
                                      O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
 
     std::vector<std::string> argv_strings{program};
     argv_strings.insert(argv_strings.end(), args.begin(), args.end());
@@ -177,8 +172,8 @@ ProcessResult run_process(const std::string& program, const std::vector<std::str
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
-    result.out = read_text(out_path);
-    result.err = read_text(err_path);
+    result.out = text_file(out_path);
+    result.err = text_file(err_path);
     return result;
 }
 
@@ -229,6 +224,12 @@ ProcessResult run_nprquake(const std::vector<std::string>& args, const std::stri
     std::vector<std::string> env = nprquake_environment();
     env.insert(env.end(), extra_env.begin(), extra_env.end());
     return run_process(nprquake_path(), args, env, timeout_seconds, capture_dir);
+}
+
+ProcessResult run_tool(const std::string& name, const std::vector<std::string>& args,
+                       const std::string& cwd, double timeout_seconds) {
+    TempDir capture("nq_tool");
+    return run_process(bin_dir() + "/" + name, args, {}, timeout_seconds, capture.path(), cwd);
 }
 
 std::string sanitizer_report(std::string_view text) {

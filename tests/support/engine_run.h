@@ -26,7 +26,7 @@ struct ProcessResult {
 // exist), read back once the process has ended, so a chatty child can never block on a pipe.
 ProcessResult run_process(const std::string& program, const std::vector<std::string>& args,
                           const std::vector<std::string>& env, double timeout_seconds,
-                          const std::string& capture_dir);
+                          const std::string& capture_dir, const std::string& cwd = "");
 
 // A fresh directory under the system temp dir, removed with everything in it.
 class TempDir {
@@ -58,6 +58,11 @@ std::vector<std::string> nprquake_environment();
 ProcessResult run_nprquake(const std::vector<std::string>& args, const std::string& capture_dir,
                            double timeout_seconds = 120,
                            const std::vector<std::string>& extra_env = {});
+
+// Runs the build's tool `name` (bin_dir()/name: mdltool, demotool, paktool...) with `args`,
+// from directory `cwd` ("" = this one), its output captured in a scratch directory.
+ProcessResult run_tool(const std::string& name, const std::vector<std::string>& args,
+                       const std::string& cwd = "", double timeout_seconds = 120);
 
 // The first line of a sanitizer report in `text` (AddressSanitizer, LeakSanitizer,
 // UndefinedBehaviorSanitizer "runtime error:"), or "" when there is none.

@@ -1,13 +1,9 @@
 #include "support/synth_pak.h"
 
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <stdexcept>
-
-#include <unistd.h>
 
 namespace nq::test {
 
@@ -64,19 +60,6 @@ std::vector<uint8_t> build_pak(const std::vector<NamedText>& files) {
     return build_raw_pak(pak);
 }
 
-int32_t read_le32(std::span<const uint8_t> bytes, size_t at) {
-    if (at + 4 > bytes.size()) throw std::out_of_range("read_le32 past end");
-    uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= static_cast<uint32_t>(bytes[at + i]) << (8 * i);
-    return static_cast<int32_t>(v);
-}
-
-void poke_le32(std::vector<uint8_t>& bytes, size_t at, int32_t value) {
-    if (at + 4 > bytes.size()) throw std::out_of_range("poke_le32 past end");
-    auto v = static_cast<uint32_t>(value);
-    for (int i = 0; i < 4; ++i) bytes[at + i] = static_cast<uint8_t>(v >> (8 * i));
-}
-
 std::vector<SeedFile> synthetic_pak_seeds() {
     std::vector<SeedFile> seeds;
     seeds.push_back({"empty.pak", build_pak({})});
@@ -98,23 +81,10 @@ std::vector<SeedFile> synthetic_pak_seeds() {
     return seeds;
 }
 
-TempGameTree::TempGameTree() {
-    static std::atomic<unsigned> counter{0};
-    std::random_device rd;
-    std::string leaf = "nq_pak_test_" + std::to_string(::getpid()) + "_" +
-                       std::to_string(counter++) + "_" + std::to_string(rd());
-    fs::path dir = fs::temp_directory_path() / leaf;
-    if (!fs::create_directories(dir)) throw std::runtime_error("cannot create " + dir.string());
-    root_ = dir.string();
-}
-
-TempGameTree::~TempGameTree() {
-    std::error_code ec;
-    fs::remove_all(root_, ec);
-}
+TempGameTree::TempGameTree() : dir_("nq_pak_test") {}
 
 std::string TempGameTree::path(std::string_view relative) const {
-    return (fs::path(root_) / relative).string();
+    return (fs::path(root()) / relative).string();
 }
 
 void TempGameTree::make_dir(std::string_view relative) const {

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/engine_run.h"
 #include "support/seed_file.h"
 
 namespace nq::test {
@@ -39,10 +40,6 @@ using NamedText = std::pair<std::string, std::string>;
 // A well-formed pak holding `files` in the given order (duplicates allowed: written as given).
 std::vector<uint8_t> build_pak(const std::vector<NamedText>& files);
 
-// Little-endian int32 access for checking and corrupting raw bytes in tests.
-int32_t read_le32(std::span<const uint8_t> bytes, size_t at);
-void poke_le32(std::vector<uint8_t>& bytes, size_t at, int32_t value);
-
 // Fuzz seeds: empty pak, nested names, duplicates, backslashes, shared and empty data, unsafe
 // names, junk after the name's NUL.
 std::vector<SeedFile> synthetic_pak_seeds();
@@ -53,11 +50,8 @@ std::vector<SeedFile> synthetic_pak_seeds();
 class TempGameTree {
   public:
     TempGameTree();
-    ~TempGameTree();
-    TempGameTree(const TempGameTree&) = delete;
-    TempGameTree& operator=(const TempGameTree&) = delete;
 
-    const std::string& root() const { return root_; }
+    const std::string& root() const { return dir_.path(); }
     // root()/relative
     std::string path(std::string_view relative) const;
     // Writes root()/relative, creating parent directories.
@@ -67,7 +61,7 @@ class TempGameTree {
     void make_dir(std::string_view relative) const;
 
   private:
-    std::string root_;
+    TempDir dir_;
 };
 
 }  // namespace nq::test

@@ -13,28 +13,20 @@
 
 #include "formats/bsp.h"
 #include "formats/entities.h"
+#include "support/raw_bytes.h"
 #include "support/synth_bsp.h"
 #include "support/test_data.h"
 
 namespace nq {
 namespace {
 
+using test::raw_file;
+using test::read_le32;
+
 using test::SynthBsp;
 namespace room = test::box_room;
 
 // ---- Independent raw access (the format as documented, not the parser's tables) -----------
-
-std::vector<uint8_t> raw_file(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw std::runtime_error("cannot open " + path);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-int32_t raw_i32(const std::vector<uint8_t>& b, size_t at) {
-    int32_t v;
-    std::memcpy(&v, b.data() + at, 4);  // the test host is little-endian, like the format
-    return v;
-}
 
 void put_i32(std::vector<uint8_t>& b, size_t at, int32_t v) {
     std::memcpy(b.data() + at, &v, 4);
@@ -62,7 +54,7 @@ struct RawSpan {
     size_t offset, length;
 };
 RawSpan raw_lump(const std::vector<uint8_t>& b, int lump) {
-    return {size_t(raw_i32(b, 4 + 8 * lump)), size_t(raw_i32(b, 8 + 8 * lump))};
+    return {size_t(read_le32(b, 4 + 8 * lump)), size_t(read_le32(b, 8 + 8 * lump))};
 }
 
 Bsp parse_ok(const std::vector<uint8_t>& bytes, const std::string& name = "test.bsp") {
@@ -147,7 +139,7 @@ TEST(BspReal, EveryMapParsesWithCountsMatchingItsLumps) {
     for (const auto& m : real_maps()) {
         SCOPED_TRACE(m.path);
         const Bsp& bsp = m.bsp;
-        ASSERT_EQ(raw_i32(m.raw, 0), 29);
+        ASSERT_EQ(read_le32(m.raw, 0), 29);
         EXPECT_EQ(bsp.format, BspFormat::bsp29);
         const size_t counts[] = {
             bsp.planes.size(),    bsp.vertices.size(),     bsp.nodes.size(),
@@ -164,7 +156,7 @@ TEST(BspReal, EveryMapParsesWithCountsMatchingItsLumps) {
         EXPECT_EQ(bsp.visibility.size(), raw_lump(m.raw, kVis).length);
         EXPECT_EQ(bsp.lighting.size(), raw_lump(m.raw, kLight).length);
         const RawSpan tex = raw_lump(m.raw, kTex);
-        EXPECT_EQ(bsp.textures.size(), size_t(raw_i32(m.raw, tex.offset)));
+        EXPECT_EQ(bsp.textures.size(), size_t(read_le32(m.raw, tex.offset)));
         const RawSpan ent = raw_lump(m.raw, kEnt);
         const char* text = reinterpret_cast<const char*>(m.raw.data() + ent.offset);
         EXPECT_EQ(bsp.entities, std::string(text, strnlen(text, ent.length)));
@@ -179,12 +171,12 @@ TEST(BspReal, StartIsBsp29WithNineModels) {
     // Model 0's fields, read raw: 9 floats, then headnodes[4], visleafs, firstface, numfaces.
     const size_t model0 = raw_lump(m.raw, kModels).offset;
     const BspModel& world = m.bsp.models[0];
-    EXPECT_EQ(world.headnodes[0], raw_i32(m.raw, model0 + 36));
-    EXPECT_EQ(world.headnodes[1], raw_i32(m.raw, model0 + 40));
-    EXPECT_EQ(world.headnodes[2], raw_i32(m.raw, model0 + 44));
-    EXPECT_EQ(world.visleafs, uint32_t(raw_i32(m.raw, model0 + 52)));
+    EXPECT_EQ(world.headnodes[0], read_le32(m.raw, model0 + 36));
+    EXPECT_EQ(world.headnodes[1], read_le32(m.raw, model0 + 40));
+    EXPECT_EQ(world.headnodes[2], read_le32(m.raw, model0 + 44));
+    EXPECT_EQ(world.visleafs, uint32_t(read_le32(m.raw, model0 + 52)));
     EXPECT_EQ(world.first_face, 0u);
-    EXPECT_EQ(world.num_faces, uint32_t(raw_i32(m.raw, model0 + 60)));
+    EXPECT_EQ(world.num_faces, uint32_t(read_le32(m.raw, model0 + 60)));
 }
 
 TEST(BspReal, WorldspawnComesFirstAndLevelsHaveAPlayerStart) {
@@ -248,7 +240,7 @@ TEST(BspReal, PvsRowsMatchABruteForceDecoder) {
     const RealMap& m = start_map();
     const Bsp& bsp = m.bsp;
     const size_t model0 = raw_lump(m.raw, kModels).offset;
-    const size_t visleafs = size_t(raw_i32(m.raw, model0 + 52));
+    const size_t visleafs = size_t(read_le32(m.raw, model0 + 52));
     const size_t row_bytes = (visleafs + 7) / 8;
     ASSERT_EQ(pvs_row_bytes(bsp), row_bytes);
     const RawSpan vis = raw_lump(m.raw, kVis);
@@ -259,7 +251,7 @@ TEST(BspReal, PvsRowsMatchABruteForceDecoder) {
     size_t rows_with_data = 0;
     for (uint32_t leaf = 1; leaf <= visleafs; ++leaf) {
         SCOPED_TRACE("leaf " + std::to_string(leaf));
-        const int32_t visofs = raw_i32(m.raw, leafs.offset + 28 * leaf + 4);
+        const int32_t visofs = read_le32(m.raw, leafs.offset + 28 * leaf + 4);
         const auto row = decompress_vis(bsp, leaf);
         ASSERT_EQ(row.size(), row_bytes);
         if (visofs < 0) {
@@ -284,7 +276,7 @@ TEST(BspReal, TexturesKeepEveryMipLevelAndMissingOnesArePlaceholders) {
         size_t missing = 0;
         for (size_t i = 0; i < m.bsp.textures.size(); ++i) {
             const BspTexture& t = m.bsp.textures[i];
-            const int32_t miptex = raw_i32(m.raw, lump.offset + 4 + 4 * i);
+            const int32_t miptex = read_le32(m.raw, lump.offset + 4 + 4 * i);
             if (miptex == -1) {
                 ++missing;
                 EXPECT_TRUE(t.placeholder);
@@ -293,13 +285,13 @@ TEST(BspReal, TexturesKeepEveryMipLevelAndMissingOnesArePlaceholders) {
             ASSERT_FALSE(t.placeholder) << t.name;
             const size_t base = lump.offset + size_t(miptex);
             EXPECT_EQ(t.name, std::string(reinterpret_cast<const char*>(&m.raw[base])));
-            EXPECT_EQ(t.width, uint32_t(raw_i32(m.raw, base + 16)));
-            EXPECT_EQ(t.height, uint32_t(raw_i32(m.raw, base + 20)));
+            EXPECT_EQ(t.width, uint32_t(read_le32(m.raw, base + 16)));
+            EXPECT_EQ(t.height, uint32_t(read_le32(m.raw, base + 20)));
             for (int level = 0; level < 4; ++level) {
                 const BspMipLevel& mip = t.mips[level];
                 EXPECT_EQ(mip.width, t.width >> level);
                 EXPECT_EQ(mip.height, t.height >> level);
-                const size_t at = base + size_t(raw_i32(m.raw, base + 24 + 4 * level));
+                const size_t at = base + size_t(read_le32(m.raw, base + 24 + 4 * level));
                 ASSERT_EQ(mip.pixels.size(), size_t(mip.width) * mip.height);
                 EXPECT_TRUE(std::equal(mip.pixels.begin(), mip.pixels.end(), m.raw.begin() + at));
             }
@@ -484,8 +476,8 @@ TEST_P(BspSynth, OddTexturesAreWarnedAbout) {
     EXPECT_TRUE(has_warning(bsp.warnings, "size 24x16 is not a multiple of 16"));
     EXPECT_EQ(bsp.textures[0].mips[3].width, 3u);
     // A miptex with a header but all-zero level offsets keeps its pixels in a WAD.
-    const size_t lump = size_t(raw_i32(bytes, 4 + 8 * kTex));
-    const size_t miptex = lump + size_t(raw_i32(bytes, lump + 4));
+    const size_t lump = size_t(read_le32(bytes, 4 + 8 * kTex));
+    const size_t miptex = lump + size_t(read_le32(bytes, lump + 4));
     for (int level = 0; level < 4; ++level) put_i32(bytes, miptex + 24 + 4 * level, 0);
     bsp = parse_ok(bytes);
     EXPECT_TRUE(bsp.textures[0].placeholder);
@@ -722,7 +714,7 @@ TEST_P(BspSynth, LyingMiptexOffsetsAreErrors) {
     EXPECT_NE(e.message.find("lies outside the texture lump"), std::string::npos);
 
     bytes = good;
-    const size_t miptex0 = lump + size_t(raw_i32(good, lump + 4));
+    const size_t miptex0 = lump + size_t(read_le32(good, lump + 4));
     put_i32(bytes, miptex0 + 24 + 8, 0x7ffffff0);  // mip level 2
     e = parse_error(bytes);
     EXPECT_EQ(e.offset, miptex0 + 24 + 8);
@@ -740,7 +732,7 @@ TEST_P(BspSynth, LyingMiptexOffsetsAreErrors) {
     synth.textures[0] = {"big", 64, 64, false};  // 5440 pixel bytes
     bytes = test::write_bsp(synth, GetParam());
     const size_t big_lump = raw_lump(bytes, kTex).offset;
-    put_i32(bytes, big_lump + 8, raw_i32(bytes, big_lump + 4));
+    put_i32(bytes, big_lump + 8, read_le32(bytes, big_lump + 4));
     e = parse_error(bytes);
     EXPECT_NE(e.message.find("texture 'big' mip level 0: textures claim more pixel data"),
               std::string::npos)

@@ -10,9 +10,13 @@
 #include "client/client_math.h"
 #include "client/visible_entities.h"
 #include "client_test_fixture.h"
+#include "support/raw_bytes.h"
 
 namespace nq {
 namespace {
+
+using test::read_le32;
+using test::read_lef32;
 
 using namespace protocol;
 
@@ -275,27 +279,16 @@ TEST(Animation, SpritesShowOneImageAndSkinsCycle) {
 
 // ---- model information from the real files, checked against an independent walk ------------
 
-int32_t le32(const std::vector<uint8_t>& b, size_t at) {
-    return static_cast<int32_t>(b[at] | (b[at + 1] << 8) | (b[at + 2] << 16) |
-                                (static_cast<uint32_t>(b[at + 3]) << 24));
-}
-float lef(const std::vector<uint8_t>& b, size_t at) {
-    uint32_t u = static_cast<uint32_t>(le32(b, at));
-    float f;
-    std::memcpy(&f, &u, sizeof f);
-    return f;
-}
-
 // Walks an MDL by its documented layout: 84-byte header, skins, st verts (12 bytes each),
 // triangles (16), then frames: type 0 = one pose (8 + 16 + 4 * verts bytes), else a group.
 std::vector<AnimationGroup> walk_mdl_frames(const std::vector<uint8_t>& b) {
-    const int skins = le32(b, 48), width = le32(b, 52), height = le32(b, 56);
-    const int verts = le32(b, 60), tris = le32(b, 64), frames = le32(b, 68);
+    const int skins = read_le32(b, 48), width = read_le32(b, 52), height = read_le32(b, 56);
+    const int verts = read_le32(b, 60), tris = read_le32(b, 64), frames = read_le32(b, 68);
     size_t at = 84;
     for (int i = 0; i < skins; ++i) {
-        const int type = le32(b, at);
+        const int type = read_le32(b, at);
         at += 4;
-        const int n = type == 0 ? 1 : le32(b, at);
+        const int n = type == 0 ? 1 : read_le32(b, at);
         if (type != 0) at += 4 + 4 * static_cast<size_t>(n);
         at += static_cast<size_t>(n) * static_cast<size_t>(width * height);
     }
@@ -304,16 +297,16 @@ std::vector<AnimationGroup> walk_mdl_frames(const std::vector<uint8_t>& b) {
     std::vector<AnimationGroup> out;
     uint32_t pose = 0;
     for (int f = 0; f < frames; ++f) {
-        const int type = le32(b, at);
+        const int type = read_le32(b, at);
         at += 4;
         if (type == 0) {
             out.push_back({pose++, 1, {}});
             at += pose_bytes;
             continue;
         }
-        const int n = le32(b, at);
+        const int n = read_le32(b, at);
         AnimationGroup g{pose, static_cast<uint32_t>(n), {}};
-        for (int i = 0; i < n; ++i) g.intervals.push_back(lef(b, at + 12 + 4 * i));
+        for (int i = 0; i < n; ++i) g.intervals.push_back(read_lef32(b, at + 12 + 4 * i));
         at += 12 + 4 * static_cast<size_t>(n) + static_cast<size_t>(n) * pose_bytes;
         pose += static_cast<uint32_t>(n);
         out.push_back(g);
@@ -329,9 +322,9 @@ TEST(ModelInfoFromFiles, FramesPosesAndFlagsMatchTheFiles) {
         ASSERT_TRUE(mdl.ok()) << mdl.error().to_string();
         ModelInfo info = model_info_from_mdl(mdl.value());
         EXPECT_EQ(info.kind, ModelKind::Alias);
-        EXPECT_EQ(info.flags, le32(bytes, 76));
-        EXPECT_EQ(info.sync_type, le32(bytes, 72));
-        EXPECT_EQ(info.skins.size(), static_cast<size_t>(le32(bytes, 48)));
+        EXPECT_EQ(info.flags, read_le32(bytes, 76));
+        EXPECT_EQ(info.sync_type, read_le32(bytes, 72));
+        EXPECT_EQ(info.skins.size(), static_cast<size_t>(read_le32(bytes, 48)));
         std::vector<AnimationGroup> want = walk_mdl_frames(bytes);
         ASSERT_EQ(info.frames.size(), want.size());
         for (size_t i = 0; i < want.size(); ++i) {
@@ -359,7 +352,7 @@ TEST(ModelInfoFromFiles, SpriteFramesCountImages) {
     ModelInfo info = model_info_from_spr(spr.value());
     EXPECT_EQ(info.kind, ModelKind::Sprite);
     EXPECT_FALSE(info.lerp_poses);
-    EXPECT_EQ(info.frames.size(), static_cast<size_t>(le32(bytes, 24)));  // header numframes
+    EXPECT_EQ(info.frames.size(), static_cast<size_t>(read_le32(bytes, 24)));  // header numframes
     uint32_t image = 0;
     for (const AnimationGroup& g : info.frames) {
         EXPECT_EQ(g.first, image);

@@ -12,18 +12,16 @@
 #include "client/visible_entities.h"
 #include "client_test_fixture.h"
 #include "formats/message_encoder.h"
+#include "support/raw_bytes.h"
 #include "support/synth_dem.h"
 
 namespace nq {
 namespace {
 
+using test::read_le32;
+
 using namespace protocol;
 using Bytes = std::vector<uint8_t>;
-
-int32_t le_i32(const Bytes& b, size_t at) {
-    return static_cast<int32_t>(b[at] | (b[at + 1] << 8) | (b[at + 2] << 16) |
-                                (static_cast<uint32_t>(b[at + 3]) << 24));
-}
 
 // Plays `file` to its end in timedemo mode (bounded), returning the player.
 DemoPlayer play(const Bytes& file, DemoMode mode = DemoMode::TimeDemo, size_t max_frames = 100000) {
@@ -53,7 +51,7 @@ TEST(ClientErrors, ModelIndexBeyondThePrecacheEndsPlaybackAtTheMessage) {
     ASSERT_TRUE(player.error().has_value());
     const Error& e = *player.error();
     // Independent offset: "-1\n", block 0's header and message, block 1's header, svc_time.
-    const size_t block1 = 3 + 16 + static_cast<size_t>(le_i32(file, 3));
+    const size_t block1 = 3 + 16 + static_cast<size_t>(read_le32(file, 3));
     EXPECT_EQ(e.offset, block1 + 16 + 5);
     EXPECT_EQ(e.file, "bad.dem");
     EXPECT_NE(e.message.find("block 1"), std::string::npos) << e.message;

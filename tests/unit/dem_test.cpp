@@ -1,7 +1,6 @@
 // The .dem container, whole-demo decoding and summary, malformed demos, the real LibreQuake
 // demos, and the demotool command line.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -17,27 +16,20 @@
 #include "formats/demo_summary.h"
 #include "formats/message_decoder.h"
 #include "formats/message_encoder.h"
+#include "support/engine_run.h"
+#include "support/raw_bytes.h"
 #include "support/synth_dem.h"
 #include "support/test_data.h"
 
 namespace nq {
 namespace {
 
+using test::read_le32;
+using test::read_lef32;
+
 using Bytes = std::vector<uint8_t>;
 
 // ---- independent little helpers (no code under test) ----------------------------------------
-
-int32_t le_i32(const Bytes& b, size_t at) {
-    return static_cast<int32_t>(b[at] | (b[at + 1] << 8) | (b[at + 2] << 16) |
-                                (static_cast<uint32_t>(b[at + 3]) << 24));
-}
-
-float le_f32(const Bytes& b, size_t at) {
-    uint32_t u = static_cast<uint32_t>(le_i32(b, at));
-    float f;
-    std::memcpy(&f, &u, sizeof f);
-    return f;
-}
 
 void put_i32(Bytes& b, size_t at, int32_t v) {
     for (int i = 0; i < 4; ++i)
@@ -55,7 +47,7 @@ std::vector<RawBlock> scan_blocks(const Bytes& b) {
     ++pos;
     std::vector<RawBlock> out;
     while (pos + 16 <= b.size()) {
-        int32_t len = le_i32(b, pos);
+        int32_t len = read_le32(b, pos);
         if (len < 0 || pos + 16 + static_cast<size_t>(len) > b.size()) break;
         out.push_back({pos, len});
         pos += 16 + static_cast<size_t>(len);
@@ -330,7 +322,7 @@ TEST_P(RealDemo, BlocksMatchAnIndependentScan) {
     for (size_t i = 0; i < raw.size(); ++i) {
         EXPECT_EQ(decoded->demo.blocks[i].offset, raw[i].offset);
         EXPECT_EQ(decoded->demo.blocks[i].message.size(), static_cast<size_t>(raw[i].length));
-        EXPECT_EQ(decoded->demo.blocks[i].view_angles[1], le_f32(file, raw[i].offset + 8));
+        EXPECT_EQ(decoded->demo.blocks[i].view_angles[1], read_lef32(file, raw[i].offset + 8));
         total += static_cast<size_t>(raw[i].length);
     }
     // The messages tile every block exactly: the histogram's bytes add up to all block bytes.
@@ -352,7 +344,7 @@ TEST_P(RealDemo, TimeIsMonotonicPerMapAndDurationIsTheLastTime) {
     std::vector<float> frame_times;
     for (const RawBlock& b : scan_blocks(file)) {
         if (b.length >= 5 && file[b.offset + 16] == 7)
-            frame_times.push_back(le_f32(file, b.offset + 17));
+            frame_times.push_back(read_lef32(file, b.offset + 17));
     }
     ASSERT_FALSE(frame_times.empty());
 
@@ -407,13 +399,13 @@ StartMap read_start_map() {
     Bytes bsp = load("maps/start.bsp");
     StartMap m;
     const size_t entities_lump = 4 + 0 * 8, models_lump = 4 + 14 * 8;
-    int32_t models_at = le_i32(bsp, models_lump);
+    int32_t models_at = read_le32(bsp, models_lump);
     for (int i = 0; i < 3; ++i) {
-        m.mins[i] = le_f32(bsp, models_at + 4 * i);
-        m.maxs[i] = le_f32(bsp, models_at + 12 + 4 * i);
+        m.mins[i] = read_lef32(bsp, models_at + 4 * i);
+        m.maxs[i] = read_lef32(bsp, models_at + 12 + 4 * i);
     }
-    m.entities.assign(reinterpret_cast<const char*>(bsp.data()) + le_i32(bsp, entities_lump),
-                      le_i32(bsp, entities_lump + 4));
+    m.entities.assign(reinterpret_cast<const char*>(bsp.data()) + read_le32(bsp, entities_lump),
+                      read_le32(bsp, entities_lump + 4));
     return m;
 }
 std::array<float, 3> origin_of(const std::string& entities, const std::string& classname) {
@@ -486,44 +478,32 @@ TEST_P(RealDemo, EntityPositionsAgreeWithTheMap) {
 
 // ---- demotool ---------------------------------------------------------------------------------
 
-struct ToolRun {
-    int status;
-    std::string out;
-};
-ToolRun run_demotool(const std::string& args) {
-    const char* bin = std::getenv("NQ_BIN_DIR");
-    std::string exe = std::string(bin ? bin : "bin") + "/demotool";
-    FILE* p = popen((exe + " " + args + " 2>&1").c_str(), "r");
-    if (!p) throw std::runtime_error("cannot run " + exe);
-    std::string out;
-    char buf[4096];
-    for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
-    int status = pclose(p);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+test::ProcessResult run_demotool(const std::vector<std::string>& args) {
+    return test::run_tool("demotool", args);
 }
 
 TEST(Demotool, InfoJsonDumpAndErrors) {
     std::string demo = test::lq1_dir() + "/demo.dem";
-    ToolRun json = run_demotool("info " + demo + " --json");
-    ASSERT_EQ(json.status, 0) << json.out;
+    test::ProcessResult json = run_demotool({"info", demo, "--json"});
+    ASSERT_EQ(json.exit_code, 0) << json.describe();
     EXPECT_NE(json.out.find("\"protocol\": 666"), std::string::npos) << json.out.substr(0, 400);
     EXPECT_NE(json.out.find("\"map\": \"maps/start.bsp\""), std::string::npos);
     EXPECT_NE(json.out.find("\"name\": \"entity_update\""), std::string::npos);
 
-    ToolRun text = run_demotool("info " + demo);
-    ASSERT_EQ(text.status, 0);
+    test::ProcessResult text = run_demotool({"info", demo});
+    ASSERT_EQ(text.exit_code, 0);
     EXPECT_NE(text.out.find("protocol:       666 (FitzQuake)"), std::string::npos);
     EXPECT_NE(text.out.find("duration:"), std::string::npos);
 
-    ToolRun dump = run_demotool("dump " + demo + " --from 1 --count 1");
-    ASSERT_EQ(dump.status, 0);
+    test::ProcessResult dump = run_demotool({"dump", demo, "--from", "1", "--count", "1"});
+    ASSERT_EQ(dump.exit_code, 0);
     EXPECT_NE(dump.out.find("block 1  offset"), std::string::npos);
     EXPECT_NE(dump.out.find("svc_spawnbaseline"), std::string::npos);
     EXPECT_EQ(dump.out.find("block 2 "), std::string::npos);
 
-    EXPECT_EQ(run_demotool("frobnicate " + demo).status, 2);
-    ToolRun missing = run_demotool("info /nonexistent.dem");
-    EXPECT_EQ(missing.status, 1);
+    EXPECT_EQ(run_demotool({"frobnicate", demo}).exit_code, 2);
+    test::ProcessResult missing = run_demotool({"info", "/nonexistent.dem"});
+    EXPECT_EQ(missing.exit_code, 1);
 }
 
 }  // namespace

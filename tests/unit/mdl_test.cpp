@@ -11,29 +11,18 @@
 #include <set>
 
 #include "formats/mdl.h"
+#include "support/raw_bytes.h"
 #include "support/synth_mdl.h"
 #include "support/test_data.h"
 
 namespace nq {
 namespace {
 
-std::vector<uint8_t> raw_file(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw std::runtime_error("cannot open " + path);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
+using test::raw_file;
+using test::read_le32;
+using test::read_lef32;
 
 // Independent little-endian field reads (the test host is little-endian, like the format).
-int32_t raw_i32(const std::vector<uint8_t>& b, size_t at) {
-    int32_t v;
-    std::memcpy(&v, b.data() + at, 4);
-    return v;
-}
-float raw_f32(const std::vector<uint8_t>& b, size_t at) {
-    float v;
-    std::memcpy(&v, b.data() + at, 4);
-    return v;
-}
 
 std::string progs(const std::string& file) {
     return test::lq1_dir() + "/progs/" + file;
@@ -61,26 +50,26 @@ const std::set<std::string> kModelsWithQmex = {"boss.mdl",   "eyes.mdl",    "fla
 void check_header_against_raw(const Mdl& mdl, const std::vector<uint8_t>& raw) {
     const MdlHeader& h = mdl.header;
     EXPECT_EQ(std::string(raw.begin(), raw.begin() + 4), "IDPO");
-    EXPECT_EQ(h.version, raw_i32(raw, 4));
+    EXPECT_EQ(h.version, read_le32(raw, 4));
     for (size_t i = 0; i < 3; ++i) {
-        EXPECT_EQ(h.scale[i], raw_f32(raw, 8 + 4 * i));
-        EXPECT_EQ(h.scale_origin[i], raw_f32(raw, 20 + 4 * i));
-        EXPECT_EQ(h.eye_position[i], raw_f32(raw, 36 + 4 * i));
+        EXPECT_EQ(h.scale[i], read_lef32(raw, 8 + 4 * i));
+        EXPECT_EQ(h.scale_origin[i], read_lef32(raw, 20 + 4 * i));
+        EXPECT_EQ(h.eye_position[i], read_lef32(raw, 36 + 4 * i));
     }
-    EXPECT_EQ(h.bounding_radius, raw_f32(raw, 32));
-    EXPECT_EQ(h.num_skins, raw_i32(raw, 48));
-    EXPECT_EQ(h.skin_width, raw_i32(raw, 52));
-    EXPECT_EQ(h.skin_height, raw_i32(raw, 56));
-    EXPECT_EQ(h.num_verts, raw_i32(raw, 60));
-    EXPECT_EQ(h.num_tris, raw_i32(raw, 64));
-    EXPECT_EQ(h.num_frames, raw_i32(raw, 68));
-    EXPECT_EQ(h.sync_type, raw_i32(raw, 72));
-    EXPECT_EQ(h.flags, raw_i32(raw, 76));
-    EXPECT_EQ(h.size, raw_f32(raw, 80));
-    EXPECT_EQ(mdl.skins.size(), size_t(raw_i32(raw, 48)));
-    EXPECT_EQ(mdl.tex_coords.size(), size_t(raw_i32(raw, 60)));
-    EXPECT_EQ(mdl.triangles.size(), size_t(raw_i32(raw, 64)));
-    EXPECT_EQ(mdl.frames.size(), size_t(raw_i32(raw, 68)));
+    EXPECT_EQ(h.bounding_radius, read_lef32(raw, 32));
+    EXPECT_EQ(h.num_skins, read_le32(raw, 48));
+    EXPECT_EQ(h.skin_width, read_le32(raw, 52));
+    EXPECT_EQ(h.skin_height, read_le32(raw, 56));
+    EXPECT_EQ(h.num_verts, read_le32(raw, 60));
+    EXPECT_EQ(h.num_tris, read_le32(raw, 64));
+    EXPECT_EQ(h.num_frames, read_le32(raw, 68));
+    EXPECT_EQ(h.sync_type, read_le32(raw, 72));
+    EXPECT_EQ(h.flags, read_le32(raw, 76));
+    EXPECT_EQ(h.size, read_lef32(raw, 80));
+    EXPECT_EQ(mdl.skins.size(), size_t(read_le32(raw, 48)));
+    EXPECT_EQ(mdl.tex_coords.size(), size_t(read_le32(raw, 60)));
+    EXPECT_EQ(mdl.triangles.size(), size_t(read_le32(raw, 64)));
+    EXPECT_EQ(mdl.frames.size(), size_t(read_le32(raw, 68)));
 }
 
 void check_structure(const Mdl& mdl) {
@@ -168,13 +157,13 @@ TEST(MdlReal, PlayerModelFacts) {
     // Frame 0's first vertex, located by hand: header, one single skin, st verts, triangles,
     // then the frame type, two bbox trivertx and the 16-byte name.
     const size_t frame0 = 84 + 4 + 296 * 194 + 12 * 801 + 16 * 1060;
-    ASSERT_EQ(raw_i32(raw, frame0), 0);  // a single frame
+    ASSERT_EQ(read_le32(raw, frame0), 0);  // a single frame
     const size_t vertex0 = frame0 + 4 + 8 + 16;
     const TriVertex& tv = mdl.frames[0].poses[0].vertices[0];
     for (size_t i = 0; i < 3; ++i) {
         ASSERT_EQ(tv.v[i], raw[vertex0 + i]);
         const float expected =
-            raw_f32(raw, 8 + 4 * i) * raw[vertex0 + i] + raw_f32(raw, 20 + 4 * i);
+            read_lef32(raw, 8 + 4 * i) * raw[vertex0 + i] + read_lef32(raw, 20 + 4 * i);
         EXPECT_FLOAT_EQ(decode_vertex(mdl.header, tv)[i], expected);
     }
     EXPECT_EQ(tv.light_normal_index, raw[vertex0 + 3]);

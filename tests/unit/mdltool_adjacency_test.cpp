@@ -3,18 +3,15 @@
 // malformed models among them, and with bad command lines.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
-#include <random>
 #include <sstream>
 
 #include "common/file_io.h"
+#include "support/engine_run.h"
+#include "support/raw_bytes.h"
 #include "support/synth_mdl.h"
 #include "support/synth_pak.h"
 #include "support/test_data.h"
@@ -24,61 +21,16 @@ namespace fs = std::filesystem;
 namespace nq {
 namespace {
 
-struct ToolRun {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-    std::ifstream f(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-std::string quoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-class TempDir {
-  public:
-    TempDir() {
-        std::random_device rd;
-        path_ = fs::temp_directory_path() / ("mdltool_adjacency_" + std::to_string(rd()));
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    const fs::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-  private:
-    fs::path path_;
-};
-
-std::string mdltool_binary() {
-    const char* dir = std::getenv("NQ_BIN_DIR");
-    if (!dir || !*dir) throw std::runtime_error("NQ_BIN_DIR is not set (ctest sets it)");
-    const fs::path bin = fs::absolute(fs::path(dir) / "mdltool");
-    if (!fs::exists(bin)) throw std::runtime_error(bin.string() + " missing: build 'mdltool'");
-    return bin.string();
-}
+using test::TempDir;
+using ToolRun = test::ProcessResult;
 
 // Runs mdltool with `args` in directory `cwd` (default: the current one).
 ToolRun run_mdltool(const std::vector<std::string>& args, const std::string& cwd = "") {
-    TempDir capture;
-    std::string cmd = cwd.empty() ? "" : "cd " + quoted(cwd) + " && ";
-    cmd += quoted(mdltool_binary());
-    for (const std::string& a : args) cmd += " " + quoted(a);
-    cmd += " >" + quoted(capture.file("out")) + " 2>" + quoted(capture.file("err"));
-    const int status = std::system(cmd.c_str());
-    ToolRun run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = slurp(capture.path() / "out");
-    run.err = slurp(capture.path() / "err");
-    return run;
+    return test::run_tool("mdltool", args, cwd);
+}
+
+std::string slurp(const std::string& path) {
+    return test::text_file(path);
 }
 
 bool contains(const std::string& haystack, const std::string& needle) {
@@ -231,13 +183,13 @@ TEST(MdltoolAdjacency, MalformedModelIsReportedAndTheFolderStillRuns) {
     TempDir dir;
     ASSERT_EQ(write_file(dir.file("cube.mdl"), test::write_mdl(cube_mdl())), "");
     ASSERT_EQ(write_file(dir.file("BAD.mdl"), test::write_mdl(bad_mdl())), "");
-    ToolRun run = run_mdltool({"adjacency", dir.path().string()});
+    ToolRun run = run_mdltool({"adjacency", dir.path()});
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_TRUE(contains(run.err, "BAD.mdl: offset " + std::to_string(kBadOffset) +
                                       ": triangle 1 vertex 2 index 9 is out of range"))
         << run.err;
     EXPECT_TRUE(contains(run.out, "cube.mdl ")) << run.out;
-    run = run_mdltool({"adjacency", "--json", dir.path().string()});
+    run = run_mdltool({"adjacency", "--json", dir.path()});
     EXPECT_EQ(run.exit_code, 1);
     ASSERT_TRUE(looks_like_json_object(run.out)) << run.out;
     EXPECT_EQ(count_of(run.out, "\"ok\": false"), 1u);
@@ -314,7 +266,7 @@ TEST(MdltoolExport, AllFramesAndOtherFormats) {
     EXPECT_TRUE(contains(ply, "element vertex 8\n")) << ply;
     EXPECT_TRUE(contains(ply, "element face 12\n"));
     // Default output: the model's name with .obj, in the current directory; .off works too.
-    run = run_mdltool({"export", dir.file("cube.mdl")}, dir.path().string());
+    run = run_mdltool({"export", dir.file("cube.mdl")}, dir.path());
     EXPECT_EQ(run.exit_code, 0) << run.err;
     EXPECT_TRUE(fs::exists(dir.file("cube.obj")));
     run = run_mdltool({"export", dir.file("cube.mdl"), "-o", dir.file("c.off")});

@@ -3,80 +3,22 @@
 // models, and with bad command lines.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdlib>
-#include <filesystem>
 #include <fstream>
-#include <iterator>
-#include <random>
 
 #include "common/file_io.h"
+#include "support/engine_run.h"
+#include "support/raw_bytes.h"
 #include "support/synth_mdl.h"
 #include "support/test_data.h"
-
-namespace fs = std::filesystem;
 
 namespace nq {
 namespace {
 
-struct ToolRun {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-    std::ifstream f(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-std::string quoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-// A fresh directory under the system temp dir, removed at the end of the test.
-class TempDir {
-  public:
-    TempDir() {
-        std::random_device rd;
-        path_ = fs::temp_directory_path() / ("mdltool_test_" + std::to_string(rd()));
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    const fs::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-  private:
-    fs::path path_;
-};
-
-fs::path mdltool_binary() {
-    const char* dir = std::getenv("NQ_BIN_DIR");
-    if (!dir || !*dir) {
-        throw std::runtime_error("NQ_BIN_DIR is not set (ctest sets it to the build's bin/)");
-    }
-    fs::path bin = fs::path(dir) / "mdltool";
-    if (!fs::exists(bin)) throw std::runtime_error(bin.string() + " missing: build 'mdltool'");
-    return bin;
-}
+using test::TempDir;
+using ToolRun = test::ProcessResult;
 
 ToolRun run_mdltool(const std::vector<std::string>& args) {
-    TempDir capture;
-    std::string cmd = quoted(mdltool_binary().string());
-    for (const std::string& a : args) cmd += " " + quoted(a);
-    cmd += " >" + quoted(capture.file("out")) + " 2>" + quoted(capture.file("err"));
-    const int status = std::system(cmd.c_str());
-    ToolRun run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = slurp(capture.path() / "out");
-    run.err = slurp(capture.path() / "err");
-    return run;
+    return test::run_tool("mdltool", args);
 }
 
 bool contains(const std::string& haystack, const std::string& needle) {
@@ -170,7 +112,7 @@ TEST(MdltoolInfo, BadFileIsReportedAndTheRestStillRun) {
     // The bad triangle index field: header, 8x4 skin, 4 st verts, triangle 0, then 3 fields.
     const size_t offset = 84 + 4 + 32 + 4 * 12 + 16 + 4 + 2 * 4;
 
-    ToolRun run = run_mdltool({"info", dir.path().string()});
+    ToolRun run = run_mdltool({"info", dir.path()});
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_TRUE(contains(run.err, "BAD.MDL: offset " + std::to_string(offset) +
                                       ": triangle 1 vertex 2 index 9 is out of range"))
@@ -180,7 +122,7 @@ TEST(MdltoolInfo, BadFileIsReportedAndTheRestStillRun) {
     EXPECT_TRUE(contains(run.out, "(rotate, tracer)")) << run.out;
     EXPECT_FALSE(contains(run.out + run.err, "readme"));
 
-    run = run_mdltool({"info", "--json", dir.path().string()});
+    run = run_mdltool({"info", "--json", dir.path()});
     EXPECT_EQ(run.exit_code, 1);
     ASSERT_TRUE(looks_like_json_object(run.out)) << run.out;
     EXPECT_EQ(count_of(run.out, "\"ok\": false"), 1u);
@@ -199,7 +141,7 @@ TEST(MdltoolInfo, MissingPathsFailButOthersRun) {
 
 TEST(MdltoolInfo, EmptyDirectoryIsAFailure) {
     TempDir dir;
-    const ToolRun run = run_mdltool({"info", dir.path().string()});
+    const ToolRun run = run_mdltool({"info", dir.path()});
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_TRUE(contains(run.err, "no *.mdl files")) << run.err;
 }

@@ -1,7 +1,6 @@
 // PAK format: writer/parser round trip, every malformed-input class, name safety, real data
 // packed and read back, and the `pak` command-line tool.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -14,6 +13,8 @@
 #include "common/file_io.h"
 #include "formats/pak.h"
 #include "fs/pak_archive.h"
+#include "support/engine_run.h"
+#include "support/raw_bytes.h"
 #include "support/synth_pak.h"
 #include "support/test_data.h"
 
@@ -427,32 +428,10 @@ struct RunResult {
     std::string output;  // stdout and stderr together
 };
 
-std::string pak_tool() {
-    const char* dir = std::getenv("NQ_BIN_DIR");
-    if (!dir || !*dir) {
-        ADD_FAILURE() << "NQ_BIN_DIR is not set (run through ctest, or set it to build/.../bin)";
-        return "false";
-    }
-    std::string path = std::string(dir) + "/pak";
-    if (!std::filesystem::exists(path)) ADD_FAILURE() << path << " not found (build target pak)";
-    return path;
-}
-
-std::string quoted(const std::string& s) {
-    return "'" + s + "'";
-}
-
-RunResult run_pak(const std::string& args) {
-    RunResult result;
-    std::string command = pak_tool() + " " + args + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    if (!pipe) return result;
-    char buf[4096];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) result.output.append(buf, n);
-    int status = ::pclose(pipe);
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
+// The tool's stdout and stderr together.
+RunResult run_pak(const std::vector<std::string>& args) {
+    const test::ProcessResult run = test::run_tool("pak", args);
+    return {run.exit_code, run.out + run.err};
 }
 
 std::string file_text(const std::string& path) {
@@ -470,8 +449,7 @@ TEST(PakCli, CreateListAndExtractRoundTrip) {
     };
     for (const auto& [name, content] : files) tree.write("src/" + name, content);
 
-    RunResult created =
-        run_pak("create " + quoted(tree.path("out.pak")) + " " + quoted(tree.path("src")));
+    RunResult created = run_pak({"create", tree.path("out.pak"), tree.path("src")});
     ASSERT_EQ(created.exit_code, 0) << created.output;
 
     // The pak holds the files sorted by name (byte order), '/'-separated, data intact.
@@ -489,7 +467,7 @@ TEST(PakCli, CreateListAndExtractRoundTrip) {
         EXPECT_EQ(text_of(pak_entry_bytes(*pak, parsed->entries[it - names.begin()])), content);
     }
 
-    RunResult listed = run_pak("list " + quoted(tree.path("out.pak")));
+    RunResult listed = run_pak({"list", tree.path("out.pak")});
     ASSERT_EQ(listed.exit_code, 0) << listed.output;
     for (const auto& [name, content] : files) {
         EXPECT_NE(listed.output.find(name), std::string::npos) << name;
@@ -497,21 +475,19 @@ TEST(PakCli, CreateListAndExtractRoundTrip) {
     EXPECT_NE(listed.output.find("       768  gfx/palette.lmp"), std::string::npos);
     EXPECT_NE(listed.output.find("4 files, 787 bytes"), std::string::npos) << listed.output;
 
-    RunResult json = run_pak("list --json " + quoted(tree.path("out.pak")));
+    RunResult json = run_pak({"list", "--json", tree.path("out.pak")});
     ASSERT_EQ(json.exit_code, 0) << json.output;
     EXPECT_NE(json.output.find("\"name\": \"maps/E1M1.bsp\""), std::string::npos) << json.output;
     EXPECT_NE(json.output.find("\"count\": 4"), std::string::npos);
     EXPECT_NE(json.output.find("\"total_size\": 787"), std::string::npos);
 
-    RunResult extracted =
-        run_pak("extract " + quoted(tree.path("out.pak")) + " " + quoted(tree.path("all")));
+    RunResult extracted = run_pak({"extract", tree.path("out.pak"), tree.path("all")});
     ASSERT_EQ(extracted.exit_code, 0) << extracted.output;
     for (const auto& [name, content] : files) {
         EXPECT_EQ(file_text(tree.path("all/" + name)), content) << name;
     }
 
-    RunResult one = run_pak("extract " + quoted(tree.path("out.pak")) + " " +
-                            quoted(tree.path("one")) + " maps/e1m1.bsp");
+    RunResult one = run_pak({"extract", tree.path("out.pak"), tree.path("one"), "maps/e1m1.bsp"});
     ASSERT_EQ(one.exit_code, 0) << one.output;
     EXPECT_EQ(file_text(tree.path("one/maps/E1M1.bsp")), files[1].second);
     EXPECT_FALSE(std::filesystem::exists(tree.path("one/readme.txt")));
@@ -520,13 +496,9 @@ TEST(PakCli, CreateListAndExtractRoundTrip) {
 TEST(PakCli, CreateLeavesOutTheOutputPakWhenItLiesInsideTheTree) {
     test::TempGameTree tree;
     tree.write("src/a.txt", "a");
-    ASSERT_EQ(
-        run_pak("create " + quoted(tree.path("src/self.pak")) + " " + quoted(tree.path("src")))
-            .exit_code,
-        0);
+    ASSERT_EQ(run_pak({"create", tree.path("src/self.pak"), tree.path("src")}).exit_code, 0);
     // Run twice: the second run sees self.pak in the tree and must skip it.
-    RunResult again =
-        run_pak("create " + quoted(tree.path("src/self.pak")) + " " + quoted(tree.path("src")));
+    RunResult again = run_pak({"create", tree.path("src/self.pak"), tree.path("src")});
     ASSERT_EQ(again.exit_code, 0) << again.output;
     auto parsed = parse_pak(read_file(tree.path("src/self.pak")).value(), "self.pak");
     ASSERT_TRUE(parsed.ok());
@@ -538,8 +510,7 @@ TEST(PakCli, CreateRejectsANameOver55Bytes) {
     test::TempGameTree tree;
     std::string long_name = "maps/" + std::string(47, 'x') + ".bsp";  // 56 bytes
     tree.write("src/" + long_name, "x");
-    RunResult r =
-        run_pak("create " + quoted(tree.path("out.pak")) + " " + quoted(tree.path("src")));
+    RunResult r = run_pak({"create", tree.path("out.pak"), tree.path("src")});
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.output.find("name is 56 bytes, pak names are at most 55"), std::string::npos)
         << r.output;
@@ -549,8 +520,7 @@ TEST(PakCli, CreateRejectsANameOver55Bytes) {
 TEST(PakCli, ExtractRefusesTraversalNamesAndWritesNothingOutside) {
     test::TempGameTree tree;
     tree.write_pak("evil.pak", {{"../escape.txt", "x"}, {"ok.txt", "fine"}, {"/tmp/abs", "y"}});
-    RunResult r =
-        run_pak("extract " + quoted(tree.path("evil.pak")) + " " + quoted(tree.path("out")));
+    RunResult r = run_pak({"extract", tree.path("evil.pak"), tree.path("out")});
     EXPECT_EQ(r.exit_code, 1) << r.output;
     EXPECT_NE(r.output.find("'../escape.txt' at offset"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("refused 2 entries with unsafe names"), std::string::npos);
@@ -564,7 +534,7 @@ TEST(PakCli, ExtractDoesNotFollowASymlinkOutOfTheTargetDir) {
     tree.make_dir("out");
     std::filesystem::create_directory_symlink(tree.path("outside"), tree.path("out/maps"));
     tree.write_pak("p.pak", {{"maps/x.bsp", "x"}});
-    RunResult r = run_pak("extract " + quoted(tree.path("p.pak")) + " " + quoted(tree.path("out")));
+    RunResult r = run_pak({"extract", tree.path("p.pak"), tree.path("out")});
     EXPECT_EQ(r.exit_code, 1) << r.output;
     EXPECT_NE(r.output.find("refusing to extract 'maps/x.bsp'"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(tree.path("outside/x.bsp")));
@@ -572,32 +542,31 @@ TEST(PakCli, ExtractDoesNotFollowASymlinkOutOfTheTargetDir) {
 
 TEST(PakCli, ErrorsAndUsage) {
     test::TempGameTree tree;
-    RunResult none = run_pak("");
+    RunResult none = run_pak({});
     EXPECT_EQ(none.exit_code, 2);
     EXPECT_NE(none.output.find("usage: pak"), std::string::npos);
-    EXPECT_EQ(run_pak("frobnicate x").exit_code, 2);
-    EXPECT_EQ(run_pak("list a.pak b.pak").exit_code, 2);
-    EXPECT_EQ(run_pak("list --bogus a.pak").exit_code, 2);
-    EXPECT_EQ(run_pak("create only-one-arg").exit_code, 2);
-    RunResult help = run_pak("--help");
+    EXPECT_EQ(run_pak({"frobnicate", "x"}).exit_code, 2);
+    EXPECT_EQ(run_pak({"list", "a.pak", "b.pak"}).exit_code, 2);
+    EXPECT_EQ(run_pak({"list", "--bogus", "a.pak"}).exit_code, 2);
+    EXPECT_EQ(run_pak({"create", "only-one-arg"}).exit_code, 2);
+    RunResult help = run_pak({"--help"});
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.output.find("pak create OUT.pak DIR"), std::string::npos);
 
-    RunResult missing = run_pak("list " + quoted(tree.path("nope.pak")));
+    RunResult missing = run_pak({"list", tree.path("nope.pak")});
     EXPECT_EQ(missing.exit_code, 1);
     EXPECT_NE(missing.output.find("cannot open"), std::string::npos) << missing.output;
 
     RawPak bad = pak_with("abcd", {{"a", 12, 400}});
     tree.write_bytes("bad.pak", build_raw_pak(bad));
-    RunResult corrupt = run_pak("list " + quoted(tree.path("bad.pak")));
+    RunResult corrupt = run_pak({"list", tree.path("bad.pak")});
     EXPECT_EQ(corrupt.exit_code, 1);
     EXPECT_NE(corrupt.output.find("bad.pak: offset 72: entry 0 'a': data [12, +400)"),
               std::string::npos)
         << corrupt.output;
 
     tree.write_pak("good.pak", {{"a.txt", "a"}});
-    RunResult absent = run_pak("extract " + quoted(tree.path("good.pak")) + " " +
-                               quoted(tree.path("o")) + " b.txt");
+    RunResult absent = run_pak({"extract", tree.path("good.pak"), tree.path("o"), "b.txt"});
     EXPECT_EQ(absent.exit_code, 1);
     EXPECT_NE(absent.output.find("b.txt (nothing extracted)"), std::string::npos) << absent.output;
     EXPECT_FALSE(std::filesystem::exists(tree.path("o/a.txt")));

@@ -6,17 +6,14 @@
 #include <iterator>
 
 #include "formats/palette.h"
+#include "support/raw_bytes.h"
 #include "support/synth_wad.h"
 #include "support/test_data.h"
 
 namespace nq {
 namespace {
 
-std::vector<uint8_t> raw_file(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw std::runtime_error("cannot open " + path);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
+using test::raw_file;
 
 std::string gfx(const std::string& file) {
     return test::lq1_dir() + "/gfx/" + file;

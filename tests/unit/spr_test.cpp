@@ -9,28 +9,16 @@
 #include <iterator>
 
 #include "formats/spr.h"
+#include "support/raw_bytes.h"
 #include "support/synth_spr.h"
 #include "support/test_data.h"
 
 namespace nq {
 namespace {
 
-std::vector<uint8_t> raw_file(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw std::runtime_error("cannot open " + path);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-int32_t raw_i32(const std::vector<uint8_t>& b, size_t at) {
-    int32_t v;
-    std::memcpy(&v, b.data() + at, 4);  // the test host is little-endian, like the format
-    return v;
-}
-float raw_f32(const std::vector<uint8_t>& b, size_t at) {
-    float v;
-    std::memcpy(&v, b.data() + at, 4);
-    return v;
-}
+using test::raw_file;
+using test::read_le32;
+using test::read_lef32;
 
 Spr parse_ok(const std::vector<uint8_t>& bytes, const std::string& name = "test.spr") {
     auto spr = parse_spr(bytes, name);
@@ -55,14 +43,14 @@ TEST(SprReal, EverySpriteMatchesRawBytes) {
         ASSERT_TRUE(spr) << spr.error().to_string();
         const SprHeader& h = spr->header;
         EXPECT_EQ(std::string(raw.begin(), raw.begin() + 4), "IDSP");
-        EXPECT_EQ(h.version, raw_i32(raw, 4));
-        EXPECT_EQ(h.type, raw_i32(raw, 8));
-        EXPECT_EQ(h.bounding_radius, raw_f32(raw, 12));
-        EXPECT_EQ(h.max_width, raw_i32(raw, 16));
-        EXPECT_EQ(h.max_height, raw_i32(raw, 20));
-        EXPECT_EQ(h.num_frames, raw_i32(raw, 24));
-        EXPECT_EQ(h.beam_length, raw_f32(raw, 28));
-        EXPECT_EQ(h.sync_type, raw_i32(raw, 32));
+        EXPECT_EQ(h.version, read_le32(raw, 4));
+        EXPECT_EQ(h.type, read_le32(raw, 8));
+        EXPECT_EQ(h.bounding_radius, read_lef32(raw, 12));
+        EXPECT_EQ(h.max_width, read_le32(raw, 16));
+        EXPECT_EQ(h.max_height, read_le32(raw, 20));
+        EXPECT_EQ(h.num_frames, read_le32(raw, 24));
+        EXPECT_EQ(h.beam_length, read_lef32(raw, 28));
+        EXPECT_EQ(h.sync_type, read_le32(raw, 32));
         EXPECT_TRUE(spr->warnings.empty()) << spr->warnings.front();
         EXPECT_EQ(spr->trailing_bytes, 0u);
 
@@ -70,13 +58,13 @@ TEST(SprReal, EverySpriteMatchesRawBytes) {
         size_t at = 36;
         ASSERT_EQ(spr->frames.size(), size_t(h.num_frames));
         for (const SprFrame& f : spr->frames) {
-            ASSERT_EQ(raw_i32(raw, at), 0);
+            ASSERT_EQ(read_le32(raw, at), 0);
             ASSERT_FALSE(f.is_group);
             const SprPicture& p = f.pictures[0];
-            EXPECT_EQ(p.origin_x, raw_i32(raw, at + 4));
-            EXPECT_EQ(p.origin_y, raw_i32(raw, at + 8));
-            EXPECT_EQ(p.width, raw_i32(raw, at + 12));
-            EXPECT_EQ(p.height, raw_i32(raw, at + 16));
+            EXPECT_EQ(p.origin_x, read_le32(raw, at + 4));
+            EXPECT_EQ(p.origin_y, read_le32(raw, at + 8));
+            EXPECT_EQ(p.width, read_le32(raw, at + 12));
+            EXPECT_EQ(p.height, read_le32(raw, at + 16));
             EXPECT_LE(p.width, h.max_width);
             EXPECT_TRUE(std::equal(p.pixels.begin(), p.pixels.end(), raw.begin() + at + 20));
             at += 20 + p.pixels.size();

@@ -10,6 +10,7 @@
 #include "fs/pak_archive.h"
 #include "fs/vfs.h"
 #include "fs/vfs_path.h"
+#include "support/raw_bytes.h"
 #include "support/synth_pak.h"
 #include "support/test_data.h"
 

@@ -9,23 +9,15 @@
 #include "formats/lmp.h"
 #include "formats/palette.h"
 #include "formats/wad.h"
+#include "support/raw_bytes.h"
 #include "support/synth_wad.h"
 #include "support/test_data.h"
 
 namespace nq {
 namespace {
 
-std::vector<uint8_t> raw_file(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw std::runtime_error("cannot open " + path);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
-int32_t raw_i32(const std::vector<uint8_t>& b, size_t at) {
-    int32_t v;
-    std::memcpy(&v, b.data() + at, 4);  // the test host is little-endian, like the format
-    return v;
-}
+using test::raw_file;
+using test::read_le32;
 
 std::vector<uint8_t> gfx_wad_bytes() {
     return raw_file(test::lq1_dir() + "/gfx.wad");
@@ -49,16 +41,16 @@ bool has_warning(const std::vector<std::string>& warnings, const std::string& te
 TEST(WadReal, DirectoryMatchesRawEntries) {
     const auto raw = gfx_wad_bytes();
     ASSERT_EQ(std::string(raw.begin(), raw.begin() + 4), "WAD2");
-    const int32_t num_lumps = raw_i32(raw, 4);
-    const int32_t dir = raw_i32(raw, 8);
+    const int32_t num_lumps = read_le32(raw, 4);
+    const int32_t dir = read_le32(raw, 8);
     const Wad wad = parse_ok(raw, "gfx.wad");
     ASSERT_EQ(wad.lumps.size(), size_t(num_lumps));
     for (size_t i = 0; i < wad.lumps.size(); ++i) {
         const size_t e = size_t(dir) + 32 * i;
         const WadLump& lump = wad.lumps[i];
-        EXPECT_EQ(lump.file_offset, uint32_t(raw_i32(raw, e)));
-        EXPECT_EQ(lump.disk_size, uint32_t(raw_i32(raw, e + 4)));
-        EXPECT_EQ(lump.size, uint32_t(raw_i32(raw, e + 8)));
+        EXPECT_EQ(lump.file_offset, uint32_t(read_le32(raw, e)));
+        EXPECT_EQ(lump.disk_size, uint32_t(read_le32(raw, e + 4)));
+        EXPECT_EQ(lump.size, uint32_t(read_le32(raw, e + 8)));
         EXPECT_EQ(lump.type, raw[e + 12]);
         EXPECT_EQ(lump.compression, raw[e + 13]);
         const char* name = reinterpret_cast<const char*>(&raw[e + 16]);
@@ -98,8 +90,8 @@ TEST(WadReal, StatusBarPictures) {
         ASSERT_TRUE(pic) << pic.error().to_string();
         EXPECT_EQ(pic->width, e.w) << e.name;
         EXPECT_EQ(pic->height, e.h) << e.name;
-        EXPECT_EQ(pic->width, raw_i32(raw, lump->file_offset)) << e.name;
-        EXPECT_EQ(pic->height, raw_i32(raw, lump->file_offset + 4)) << e.name;
+        EXPECT_EQ(pic->width, read_le32(raw, lump->file_offset)) << e.name;
+        EXPECT_EQ(pic->height, read_le32(raw, lump->file_offset + 4)) << e.name;
         EXPECT_EQ(pic->at(e.w - 1, e.h - 1), raw[lump->file_offset + 8 + e.w * e.h - 1]);
     }
 }
