@@ -69,7 +69,8 @@ void Engine::register_game_cvars() {
                              "scratch2", "scratch3", "scratch4", "registered", "pausable"}) {
         CvarSpec spec;
         spec.name = name;
-        spec.default_value = std::string(name) == "pausable" ? "1" : "0";
+        // One character assigned, not a literal: GCC 12's -Wrestrict false positive.
+        spec.default_value.assign(1, std::string_view(name) == "pausable" ? '1' : '0');
         c.register_cvar(spec);
     }
 }
