@@ -22,7 +22,7 @@ ConsoleDrawer::ConsoleDrawer(QuadRenderer renderer, ConsoleStyle style)
 
 void ConsoleDrawer::set_font(const RgbaImage& font) {
     if (font.width != kFontImageSize || font.height != kFontImageSize) return;
-    if (!font_) font_ = GlTexture::generate();
+    if (!font_) font_ = npr::gl::Texture::create(nullptr);
     upload_rgba_texture(font_.id(), font.width, font.height, font.rgba.data());
 }
 
@@ -31,7 +31,7 @@ void ConsoleDrawer::set_background(const RgbaImage& image) {
         background_.reset();
         return;
     }
-    if (!background_) background_ = GlTexture::generate();
+    if (!background_) background_ = npr::gl::Texture::create(nullptr);
     upload_rgba_texture(background_.id(), image.width, image.height, image.rgba.data());
 }
 

@@ -18,7 +18,7 @@
 #include "console/console_font.h"
 #include "console/console_scene.h"
 #include "draw2d/quad_renderer.h"
-#include "video/gl_objects.h"
+#include "gl/handles.h"
 
 namespace nq {
 
@@ -46,8 +46,8 @@ class ConsoleDrawer {
     ConsoleDrawer(QuadRenderer renderer, ConsoleStyle style);
 
     QuadRenderer renderer_;
-    GlTexture font_;
-    GlTexture background_;
+    npr::gl::Texture font_;
+    npr::gl::Texture background_;
     ConsoleScene scene_;
     bool drawn_ = false;  // whether the latest draw() drew anything
 };

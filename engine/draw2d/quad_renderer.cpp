@@ -15,14 +15,14 @@ void* byte_offset(size_t offset) {
 }  // namespace
 
 Result<QuadRenderer> QuadRenderer::create(size_t capacity_quads) {
-    Result<GlProgram> program = build_quad_program();
+    Result<npr::gl::Program> program = build_quad_program();
     if (!program) return program.error();
     QuadRenderer renderer(std::move(*program), capacity_quads);
     renderer.create_buffers();
     return renderer;
 }
 
-QuadRenderer::QuadRenderer(GlProgram program, size_t capacity_quads)
+QuadRenderer::QuadRenderer(npr::gl::Program program, size_t capacity_quads)
     : program_(std::move(program)), batch_(capacity_quads) {
     screen_size_location_ = glGetUniformLocation(program_.id(), "screen_size");
     batch_.set_flush([this](std::span<const QuadVertex> vertices) { flush(vertices); });
@@ -42,9 +42,9 @@ QuadRenderer::QuadRenderer(QuadRenderer&& other) noexcept
 }
 
 void QuadRenderer::create_buffers() {
-    vertex_array_ = GlVertexArray::generate();
-    vertex_buffer_ = GlBuffer::generate();
-    index_buffer_ = GlBuffer::generate();
+    vertex_array_ = npr::gl::VertexArray::create(nullptr);
+    vertex_buffer_ = npr::gl::Buffer::create(nullptr);
+    index_buffer_ = npr::gl::Buffer::create(nullptr);
 
     GLint previous_array = 0, previous_buffer = 0;
     glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previous_array);

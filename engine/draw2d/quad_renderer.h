@@ -20,7 +20,7 @@
 #include "common/result.h"
 #include "draw2d/overlay_gl_state.h"
 #include "draw2d/quad_batch.h"
-#include "video/gl_objects.h"
+#include "gl/program.h"
 
 namespace nq {
 
@@ -67,15 +67,15 @@ class QuadRenderer {
     size_t quads_drawn() const { return quads_drawn_; }
 
   private:
-    QuadRenderer(GlProgram program, size_t capacity_quads);
+    QuadRenderer(npr::gl::Program program, size_t capacity_quads);
     void create_buffers();
     void upload_indices();
     void flush(std::span<const QuadVertex> vertices);
 
-    GlProgram program_;
-    GlVertexArray vertex_array_;
-    GlBuffer vertex_buffer_;
-    GlBuffer index_buffer_;
+    npr::gl::Program program_;
+    npr::gl::VertexArray vertex_array_;
+    npr::gl::Buffer vertex_buffer_;
+    npr::gl::Buffer index_buffer_;
     GLint screen_size_location_ = -1;
     QuadBatch batch_;
     size_t draw_calls_ = 0;

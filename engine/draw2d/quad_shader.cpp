@@ -45,8 +45,8 @@ void main() {
 
 }  // namespace
 
-Result<GlProgram> build_quad_program() {
-    Result<GlProgram> program = build_program(kVertexSource, kFragmentSource, "2d quads");
+Result<npr::gl::Program> build_quad_program() {
+    Result<npr::gl::Program> program = build_program(kVertexSource, kFragmentSource, "2d quads");
     if (!program) return program;
     GLint previous = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previous);

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "common/result.h"
-#include "video/gl_objects.h"
+#include "gl/program.h"
 
 namespace nq {
 
@@ -14,6 +14,6 @@ inline constexpr GLuint kQuadColourAttribute = 2;
 inline constexpr GLuint kQuadSamplingAttribute = 3;
 
 // Uniforms: vec2 "screen_size" (pixels), sampler2D "image" (texture unit 0, set here).
-Result<GlProgram> build_quad_program();
+Result<npr::gl::Program> build_quad_program();
 
 }  // namespace nq

@@ -17,7 +17,7 @@ void HudDrawer::set_pictures(HudPictures pictures) {
         atlas_.reset();
         return;
     }
-    if (!atlas_) atlas_ = GlTexture::generate();
+    if (!atlas_) atlas_ = npr::gl::Texture::create(nullptr);
     // Filtered like QuakeSpasm's pictures, so fractional scales (its 1.6) look the same; the
     // glyphs stay texel-exact (QuadBatch::glyph).
     upload_rgba_texture(atlas_.id(), image.width, image.height, image.rgba.data(),

@@ -14,9 +14,9 @@
 #include "client/view_blend.h"
 #include "common/result.h"
 #include "draw2d/quad_renderer.h"
+#include "gl/handles.h"
 #include "hud/hud_pictures.h"
 #include "hud/hud_scene.h"
-#include "video/gl_objects.h"
 
 namespace nq {
 
@@ -56,7 +56,7 @@ class HudDrawer {
 
     QuadRenderer renderer_;
     HudPictures pictures_;
-    GlTexture atlas_;
+    npr::gl::Texture atlas_;
     bool drawn_ = false;
 };
 

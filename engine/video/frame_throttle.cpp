@@ -1,6 +1,6 @@
 #include "video/frame_throttle.h"
 
-#include "video/gl_objects.h"
+#include "video/gl_context_setup.h"
 
 namespace nq {
 

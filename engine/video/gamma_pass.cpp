@@ -72,13 +72,13 @@ class GammaStateRestore {
 }  // namespace
 
 Result<GammaPass> GammaPass::create() {
-    Result<GlProgram> program = build_program(kVertexSource, kFragmentSource, "gamma");
+    Result<npr::gl::Program> program = build_program(kVertexSource, kFragmentSource, "gamma");
     if (!program) return program.error();
     return GammaPass(std::move(*program));
 }
 
-GammaPass::GammaPass(GlProgram program)
-    : program_(std::move(program)), empty_vertex_array_(GlVertexArray::generate()) {
+GammaPass::GammaPass(npr::gl::Program program)
+    : program_(std::move(program)), empty_vertex_array_(npr::gl::VertexArray::create(nullptr)) {
     gamma_location_ = glGetUniformLocation(program_.id(), "gamma");
     GLint previous = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
@@ -91,7 +91,7 @@ void GammaPass::apply(float gamma, int width, int height) {
     if (gamma == 1.0f || !(gamma > 0) || width <= 0 || height <= 0) return;
     GammaStateRestore restore;
     if (!frame_copy_ || copy_width_ != width || copy_height_ != height) {
-        if (!frame_copy_) frame_copy_ = GlTexture::generate();
+        if (!frame_copy_) frame_copy_ = npr::gl::Texture::create(nullptr);
         glBindTexture(GL_TEXTURE_2D, frame_copy_.id());
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                      nullptr);

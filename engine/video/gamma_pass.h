@@ -12,7 +12,7 @@
 #pragma once
 
 #include "common/result.h"
-#include "video/gl_objects.h"
+#include "gl/program.h"
 
 namespace nq {
 
@@ -23,11 +23,11 @@ class GammaPass {
     void apply(float gamma, int width, int height);
 
   private:
-    explicit GammaPass(GlProgram program);
+    explicit GammaPass(npr::gl::Program program);
 
-    GlProgram program_;
-    GlVertexArray empty_vertex_array_;  // the triangle comes from gl_VertexID
-    GlTexture frame_copy_;
+    npr::gl::Program program_;
+    npr::gl::VertexArray empty_vertex_array_;  // the triangle comes from gl_VertexID
+    npr::gl::Texture frame_copy_;
     int copy_width_ = 0, copy_height_ = 0;
     GLint gamma_location_ = -1;
 };

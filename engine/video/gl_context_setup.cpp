@@ -61,4 +61,8 @@ GlInfo describe_current_context() {
     return info;
 }
 
+bool gl_context_is_current() {
+    return SDL_GL_GetCurrentContext() != nullptr;
+}
+
 }  // namespace nq

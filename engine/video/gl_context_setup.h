@@ -16,6 +16,9 @@ void request_framebuffer_attributes();
 // empty; otherwise the result says what failed.
 std::string create_core_context(SDL_Window* window, SDL_GLContext* out);
 
+// True when the calling thread has a current GL context.
+bool gl_context_is_current();
+
 // Version, renderer and vendor strings of the current context.
 GlInfo describe_current_context();
 

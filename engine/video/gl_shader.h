@@ -1,26 +1,16 @@
-// Compiling and linking GLSL with the driver's log returned as an error, never printed.
+// The engine's GLSL programs (2D quads, gamma), built by nprlib's gl::Program -- the one
+// compile-and-link path of the engine and the styles -- with a failure as the engine's Error
+// (the program's name as its file, the failing stage and the driver's log as its message).
 #pragma once
 
-#include <epoxy/gl.h>
-
-#include <initializer_list>
 #include <string>
-#include <string_view>
 
 #include "common/result.h"
-#include "video/gl_objects.h"
+#include "gl/program.h"
 
 namespace nq {
 
-// `name` labels errors ("classic/world.frag"); `stage` is GL_VERTEX_SHADER, GL_FRAGMENT_SHADER,
-// GL_GEOMETRY_SHADER, ... The error message holds the driver's info log.
-Result<GlShader> compile_shader(GLenum stage, std::string_view source, const std::string& name);
-
-// Links the shaders into a program (they may be deleted afterwards).
-Result<GlProgram> link_program(std::initializer_list<GLuint> shaders, const std::string& name);
-
-// compile_shader(vertex) + compile_shader(fragment) + link_program.
-Result<GlProgram> build_program(std::string_view vertex_source, std::string_view fragment_source,
-                                const std::string& name);
+Result<npr::gl::Program> build_program(const char* vertex_source, const char* fragment_source,
+                                       const std::string& name);
 
 }  // namespace nq

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "video/gl_objects.h"
+#include "video/gl_context_setup.h"
 
 namespace nq {
 namespace {

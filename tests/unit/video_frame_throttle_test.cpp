@@ -9,8 +9,9 @@
 #include <optional>
 #include <vector>
 
+#include "gl/program.h"
 #include "video/frame_throttle.h"
-#include "video/gl_objects.h"
+#include "video/gl_context_setup.h"
 #include "video/gl_shader.h"
 #include "video_test_support.h"
 
@@ -50,7 +51,7 @@ class VideoFrameThrottle : public ::testing::Test {
         auto built = build_program(kVertex, kSlowFragment, "slow_fill");
         ASSERT_TRUE(built) << built.error().message;
         program = std::move(*built);
-        vao = GlVertexArray::generate();
+        vao = npr::gl::VertexArray::create(nullptr);
     }
     void TearDown() override {
         for (GLsync fence : fences) glDeleteSync(fence);
@@ -70,8 +71,8 @@ class VideoFrameThrottle : public ::testing::Test {
     }
 
     std::optional<VideoWindow> window;
-    GlProgram program;
-    GlVertexArray vao;
+    npr::gl::Program program;
+    npr::gl::VertexArray vao;
     std::vector<GLsync> fences;
 };
 

@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "video/gl_objects.h"
+#include "gl/program.h"
 #include "video/gl_shader.h"
 #include "video/gpu_pass_timers.h"
 #include "video_test_support.h"
@@ -30,7 +30,7 @@ class VideoGpuTimers : public ::testing::Test {
         auto built = build_program(kVertex, kFragment, "timer_fill");
         ASSERT_TRUE(built) << built.error().message;
         program = std::move(*built);
-        vao = GlVertexArray::generate();
+        vao = npr::gl::VertexArray::create(nullptr);
         ASSERT_TRUE(timers.init()) << "llvmpipe supports GL_TIMESTAMP queries";
     }
     void TearDown() override {
@@ -59,8 +59,8 @@ class VideoGpuTimers : public ::testing::Test {
     }
 
     std::optional<VideoWindow> window;
-    GlProgram program;
-    GlVertexArray vao;
+    npr::gl::Program program;
+    npr::gl::VertexArray vao;
     GpuPassTimers timers;
 };
 

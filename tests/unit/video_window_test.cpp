@@ -5,7 +5,7 @@
 
 #include <cstdlib>
 
-#include "video/gl_objects.h"
+#include "gl/handles.h"
 #include "video/png_io.h"
 #include "video/screenshot.h"
 #include "video_test_support.h"
@@ -108,10 +108,10 @@ TEST(VideoWindow, ScreenshotPutsTheTopOfTheScreenFirst) {
 TEST(VideoWindow, ReadsBackAFramebufferObjectAndRestoresBindings) {
     auto window = make_offscreen_window();
     ASSERT_TRUE(window) << window.error().message;
-    GlTexture texture = GlTexture::generate();
+    npr::gl::Texture texture = npr::gl::Texture::create(nullptr);
     glBindTexture(GL_TEXTURE_2D, texture.id());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 10, 6, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    GlFramebuffer fbo = GlFramebuffer::generate();
+    npr::gl::Framebuffer fbo = npr::gl::Framebuffer::create(nullptr);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture.id(), 0);
     ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
