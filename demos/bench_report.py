@@ -250,6 +250,47 @@ def startup_chart(plt, records, cells):
     return figure_png(fig)
 
 
+def gpu_pass_means(cell):
+    """Mean GPU ms per frame of each timed pass over the cell's runs ({} when none timed)."""
+    per_pass = {}
+    for record in cell.records:
+        if not record.get("gpu_timing"):
+            continue
+        for name, values in (record.get("gpu_passes") or {}).items():
+            if values.get("count"):
+                per_pass.setdefault(name, []).append(values["ms_per_frame"])
+    return {name: statistics.mean(v) for name, v in per_pass.items()}
+
+
+def gpu_chart(plt, records, cells):
+    """Stacked bars: per demo, size and style, the mean GPU time per frame of each pass."""
+    bars, passes = [], []
+    for key in cell_keys(records):
+        for column in columns_of(records):
+            c = cells[key].get(column)
+            if c is None or column == PEER:
+                continue
+            means = gpu_pass_means(c)
+            if means:
+                bars.append(("%s %s\n%s" % (key[0], key[1], column), means))
+                passes += [p for p in means if p not in passes]
+    if not bars:
+        return None
+    fig, ax = plt.subplots(figsize=(max(5, 0.9 * len(bars) + 2), 3.8))
+    bottoms = [0.0] * len(bars)
+    for name in passes:
+        heights = [means.get(name, 0.0) for _, means in bars]
+        ax.bar(range(len(bars)), heights, 0.7, bottom=bottoms, label=name)
+        bottoms = [b + h for b, h in zip(bottoms, heights)]
+    ax.set_xticks(range(len(bars)))
+    ax.set_xticklabels([label for label, _ in bars], fontsize=7)
+    ax.set_ylabel("GPU ms per frame (mean over runs)")
+    ax.set_title("GPU time per pass (timer queries)")
+    ax.legend(fontsize=7, ncol=2)
+    ax.grid(axis="y", alpha=0.3)
+    return figure_png(fig)
+
+
 def startup_rows(records, cells):
     rows = []
     for column in [c for c in columns_of(records) if c != PEER]:
@@ -272,6 +313,38 @@ def gallery_images(gallery):
         if name.endswith(".png"):
             out.append((name[:-4].replace("_", " "), os.path.join(gallery, name)))
     return out
+
+
+QUALITY_HEADER = ["demo", "size", "style", "frame", "recall", "precision", "on models",
+                  "flicker: lines", "outlines", "excess (frames)"]
+
+
+def load_quality(directory):
+    """The line-quality records benchmark.sh wrote (edgequality), [] when there are none."""
+    path = os.path.join(directory, "quality.jsonl")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [json.loads(line) for line in f if line.strip()]
+
+
+def quality_rows(quality):
+    rows = []
+    for q in quality:
+        s, fl = q["silhouettes"], q["flicker"]
+        rows.append([q["demo"], q["size"], q["style"], str(q["first_frame"]),
+                     "%.3f" % s["recall"], "%.3f" % s["precision"], "%.3f" % s["on_models"],
+                     "%.3f" % fl["lines"], "%.3f" % fl["outlines"],
+                     "%+.3f (%d)" % (fl["excess"], fl["frames"])])
+    return rows
+
+
+QUALITY_NOTE = ("Line quality (bin/edgequality, the measure the tests use): the style's silhouettes "
+                "over its object-id reference (tech_shading 3) of the same paused frame; recall = "
+                "outline pixels with a line within 1 px, precision = line pixels within 2 px of an "
+                "outline (inner folds of a model count against it), on models = within 2 px of a "
+                "model; flicker = share of line pixels that appear or vanish between consecutive "
+                "frames, against the same for the reference's outlines. Only technical draws lines.")
 
 
 def machine_rows(machine, records):
@@ -303,6 +376,9 @@ def write_report(directory, records, cells, gallery, machine, images):
                fps_chart(plt, records, cells)),
               ("bench_frametime_cdf.png", "frame-time distribution per style",
                cdf_chart(plt, directory, records, cells))]
+    gpu = gpu_chart(plt, records, cells)
+    if gpu:
+        charts.append(("bench_gpu_passes.png", "GPU time per pass", gpu))
     startup = startup_chart(plt, records, cells)
     if startup:
         charts.append(("bench_startup.png", "start-up to first frame", startup))
@@ -324,6 +400,9 @@ def write_report(directory, records, cells, gallery, machine, images):
     if rows:
         md += ["Start-up to first frame (s):", "",
                markdown_table(["style", "runs", "median", "min–max"], rows), ""]
+    quality = load_quality(directory)
+    if quality:
+        md += [QUALITY_NOTE, "", markdown_table(QUALITY_HEADER, quality_rows(quality)), ""]
     if pictures:
         md += ["Style gallery (the same demo frame in every style, one engine run):", ""]
         for caption, path in pictures:
@@ -343,6 +422,9 @@ def write_report(directory, records, cells, gallery, machine, images):
         body.append("<h2>%s</h2>%s" % (html.escape(title), img_tag(png, title)))
     if rows:
         body.append(html_table(["style", "runs", "median s", "min–max s"], rows))
+    if quality:
+        body.append("<h2>Line quality</h2><p>%s</p>%s" % (
+            html.escape(QUALITY_NOTE), html_table(QUALITY_HEADER, quality_rows(quality))))
     if pictures:
         body.append("<h2>Style gallery</h2><p>The same demo frame in every style, taken in one "
                     "engine run.</p>")

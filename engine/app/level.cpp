@@ -20,6 +20,9 @@ ModelInfo client_model_info(const RenderModel* model) {
 }  // namespace
 
 void Level::clear() {
+    if (baking_.valid()) baking_.wait();  // it reads the world that cache_ is about to drop
+    baking_ = {};
+    light_entities_.clear();
     occlusion_.reset();
     occluders_.reset();
     culler_.reset();
@@ -42,6 +45,7 @@ Result<bool> Level::load(ClientState& client) {
     auto world = cache_.load_world(names[1]);
     if (!world) return world.error();
     world_ = cache_.get(world.value());
+    start_ambient_bake(*world_->brush_data());
     ids_.assign(names.size(), 0);
     std::vector<ModelInfo> info(names.size());
     for (size_t i = 0; i < names.size(); ++i) {
@@ -58,25 +62,36 @@ Result<bool> Level::load(ClientState& client) {
     occluders_ = std::make_unique<OccluderMesh>(data->abi(), bsp_model_ranges(data->bsp()));
     occlusion_ = std::make_unique<OcclusionCuller>(*occluders_);
     auto entities = parse_entities(data->bsp().entities, names[1], data->bsp().entities_offset);
-    std::vector<LightEntity> lights;
     if (entities) {
-        lights = find_light_entities(entities.value(), warnings_);
+        light_entities_ = find_light_entities(entities.value(), warnings_);
     } else {
         warnings_.push_back(entities.error().to_string());
     }
-    bake_ambient_field(*data);
-    lights_ = std::make_unique<LightSampler>(data->bsp(), data->lighting_rgb(), std::move(lights),
-                                             ambient_.get());
     return true;
 }
 
-void Level::bake_ambient_field(const BrushModelData& data) {
-    const auto start = std::chrono::steady_clock::now();
-    const std::vector<glm::vec3> reflectivity = texture_reflectivity(data.bsp(), palette_);
-    ambient_ = std::make_unique<AmbientCubeField>(
-        AmbientCubeField::bake(data.bsp(), data.lighting_rgb(), reflectivity));
-    ambient_bake_seconds_ =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+// The bake reads only the world's BSP and lighting (held by cache_ until clear(), which waits
+// for it) and its own copy of the palette's reflectivities.
+void Level::start_ambient_bake(const BrushModelData& data) {
+    std::vector<glm::vec3> reflectivity = texture_reflectivity(data.bsp(), palette_);
+    baking_ = std::async(std::launch::async, [&data, reflectivity = std::move(reflectivity)] {
+        const auto start = std::chrono::steady_clock::now();
+        BakedField baked{AmbientCubeField::bake(data.bsp(), data.lighting_rgb(), reflectivity), 0.0};
+        baked.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return baked;
+    });
+}
+
+void Level::finish_ambient_bake() const {
+    if (!baking_.valid()) return;
+    BakedField baked = baking_.get();
+    ambient_ = std::make_unique<AmbientCubeField>(std::move(baked.field));
+    ambient_bake_seconds_ = baked.seconds;
+    const BrushModelData* data = world_->brush_data();
+    lights_ = std::make_unique<LightSampler>(data->bsp(), data->lighting_rgb(),
+                                             std::move(light_entities_), ambient_.get());
+    light_entities_.clear();
 }
 
 bool Level::holds(std::span<const std::string> model_names) const {

@@ -3,6 +3,7 @@
 // changes (a new svc_serverinfo).
 #pragma once
 
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,8 +25,8 @@ class Level {
 
     // Loads the world (model_names()[1]) and every precached model; missing models become
     // placeholders with a warning. Sets the client's model info. Fails only if the world does.
-    // At load it also bakes the map's ambient cube field (ambient_cube_bake.h), with surface
-    // colours from `palette` (set_palette; without one every surface reflects half).
+    // At load it also starts baking the map's ambient cube field (ambient_cube_bake.h), with
+    // surface colours from `palette` (set_palette; without one every surface reflects half).
     Result<bool> load(ClientState& client);
     void clear();
     // A server restarting the same map (a new serverinfo naming the same models, as Quake's
@@ -43,14 +44,31 @@ class Level {
     const Bsp* world_bsp() const;
     WorldCuller* culler() { return culler_.get(); }
     OcclusionCuller* occlusion() { return occlusion_.get(); }
-    const LightSampler* light_sampler() const { return lights_.get(); }
-    const AmbientCubeField* ambient_field() const { return ambient_.get(); }
-    // Wall-clock seconds the last load spent baking the ambient cube field.
-    double ambient_bake_seconds() const { return ambient_bake_seconds_; }
+    // The ambient cube field is baked on worker threads from the moment the world has loaded,
+    // while the other models load and register with the renderer; the first of these three
+    // to be asked waits for it (on the main thread, as everything else here).
+    const LightSampler* light_sampler() const {
+        finish_ambient_bake();
+        return lights_.get();
+    }
+    const AmbientCubeField* ambient_field() const {
+        finish_ambient_bake();
+        return ambient_.get();
+    }
+    // Wall-clock seconds the bake of the last load took.
+    double ambient_bake_seconds() const {
+        finish_ambient_bake();
+        return ambient_bake_seconds_;
+    }
     std::vector<std::string> take_warnings();
 
   private:
-    void bake_ambient_field(const BrushModelData& data);
+    struct BakedField {
+        AmbientCubeField field;
+        double seconds = 0.0;
+    };
+    void start_ambient_bake(const BrushModelData& data);
+    void finish_ambient_bake() const;
 
     ModelCache cache_;
     const RenderModel* world_ = nullptr;
@@ -60,10 +78,13 @@ class Level {
     std::unique_ptr<WorldCuller> culler_;
     std::unique_ptr<OccluderMesh> occluders_;
     std::unique_ptr<OcclusionCuller> occlusion_;
-    std::unique_ptr<AmbientCubeField> ambient_;
-    std::unique_ptr<LightSampler> lights_;
+    // Declared after cache_, so destroyed (waiting for the bake) before the world it reads.
+    mutable std::future<BakedField> baking_;
+    mutable std::vector<LightEntity> light_entities_;  // until the bake ends
+    mutable std::unique_ptr<AmbientCubeField> ambient_;
+    mutable std::unique_ptr<LightSampler> lights_;
     std::optional<PaletteBytes> palette_;
-    double ambient_bake_seconds_ = 0.0;
+    mutable double ambient_bake_seconds_ = 0.0;
     std::vector<std::string> warnings_;
 };
 

@@ -86,25 +86,21 @@ RgbImage load(const SharedRun& run, const std::string& name) {
 }
 
 Mask models_mask(const RgbImage& reference) {
-    Mask all(static_cast<size_t>(reference.width) * reference.height, 0);
+    Mask all = mask_where(reference, [](int, int) { return false; });
     for (uint32_t n : kShowroomModels) all = mask_union(all, id_mask(reference, n));
     return all;
 }
 
 // The id regions' outlines, each model's own (two touching models both keep their border).
 Mask id_outlines(const RgbImage& reference, std::initializer_list<uint32_t> numbers) {
-    Mask all(static_cast<size_t>(reference.width) * reference.height, 0);
-    for (uint32_t n : numbers) {
-        all = mask_union(all, outline(id_mask(reference, n), reference.width, reference.height));
-    }
+    Mask all = mask_where(reference, [](int, int) { return false; });
+    for (uint32_t n : numbers) all = mask_union(all, outline(id_mask(reference, n)));
     return all;
 }
 
 // Pixels an edge setting added: black in `edges`, not black in the reference.
 Mask black_edge_pixels(const RgbImage& edges, const RgbImage& reference) {
-    return mask_where(edges, [&](int x, int y) {
-        return is_black(pixel(edges, x, y)) && !is_black(pixel(reference, x, y));
-    });
+    return quality::line_pixels(edges, reference);
 }
 
 // Share of the masked pixels of `image` that satisfy `predicate`.
@@ -112,7 +108,7 @@ double share_where(const RgbImage& image, const Mask& m, auto predicate) {
     size_t total = 0, hit = 0;
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
-            if (!m[size_t(y) * image.width + x]) continue;
+            if (!m.at(x, y)) continue;
             ++total;
             hit += predicate(pixel(image, x, y));
         }
@@ -143,12 +139,11 @@ TEST(TechnicalShowroom, ReferenceShowsEveryModelInItsIdColour) {
 TEST(TechnicalShowroom, SilhouettesCoverTheObjectIdOutline) {
     const SharedRun& run = showroom_run();
     RgbImage reference = load(run, "reference.png"), edges = load(run, "silhouettes.png");
-    const int w = reference.width, h = reference.height;
     const Mask boundary = id_outlines(reference, {kCube, kStep, kSphere, kTorus});
     const Mask edge = black_edge_pixels(edges, reference);
     ASSERT_GT(count(edge), 200u);
-    const double recall = share_near(boundary, edge, w, h, 1);
-    const double stray = 1.0 - share_near(edge, boundary, w, h, 2);
+    const double recall = share_near(boundary, edge, 1);
+    const double stray = 1.0 - share_near(edge, boundary, 2);
     EXPECT_GE(recall, 0.95) << "outline pixels with a silhouette pixel within 1 px";
     EXPECT_LT(stray, 0.10) << "silhouette pixels farther than 2 px from any outline";
     RecordProperty("recall", std::to_string(recall));
@@ -169,8 +164,8 @@ TEST(TechnicalShowroom, CubeCreasesAreRidgesAndTheStepHasAValley) {
         }
         return n;
     };
-    const Box cube = bounding_box(id_mask(reference, kCube), w, h).grown(2);
-    const Box step = bounding_box(id_mask(reference, kStep), w, h).grown(2);
+    const Box cube = bounding_box(id_mask(reference, kCube)).grown(2);
+    const Box step = bounding_box(id_mask(reference, kStep)).grown(2);
     ASSERT_FALSE(cube.empty());
     ASSERT_FALSE(step.empty());
     EXPECT_GT(count_in(cube, ridge), 40u) << "the cube's edges are ridges";
@@ -203,8 +198,7 @@ TEST(TechnicalShowroom, EdgesBeyondTheBlendThresholdTakeTheModelColour) {
     // the model, the model's own colour shows; nowhere is an edge still black. (An edge that
     // has fully taken the model colour changes nothing, so the renderer may skip it.)
     const Mask edge_on_models = mask_where(faded, [&](int x, int y) {
-        const size_t i = size_t(y) * faded.width + x;
-        return edge[i] && is_showroom_id_colour(pixel(reference, x, y));
+        return edge.at(x, y) && is_showroom_id_colour(pixel(reference, x, y));
     });
     ASSERT_GT(count(edge_on_models), 100u);
     EXPECT_GE(share_where(faded, edge_on_models, is_showroom_id_colour), 0.95);
@@ -220,7 +214,7 @@ std::vector<double> shadow_ratios(const RgbImage& shadowed, const RgbImage& refe
         for (int x = 0; x < reference.width; ++x) {
             const Rgb a = pixel(shadowed, x, y), b = pixel(reference, x, y);
             if (a == b) continue;
-            if (models[size_t(y) * reference.width + x]) ++on_models;
+            if (models.at(x, y)) ++on_models;
             if (luminance(b) >= 20) ratios.push_back(luminance(a) / luminance(b));
         }
     }
@@ -298,22 +292,16 @@ TEST(TechnicalDemo, SilhouettesCoverTheOutlinesOfADemoFrame) {
     RgbImage reference, edges;
     ASSERT_NO_FATAL_FAILURE(load_screenshot(run.dir + "/demo_reference.png", reference));
     ASSERT_NO_FATAL_FAILURE(load_screenshot(run.dir + "/demo_silhouettes.png", edges));
-    const int w = reference.width, h = reference.height;
-    // Every id colour present in the frame (entity numbers are not known here).
-    Mask boundary(static_cast<size_t>(w) * h, 0), models(boundary.size(), 0);
-    for (uint32_t n = 0; n < kIdColours; ++n) {
-        Mask m = id_mask(reference, n);
-        models = mask_union(models, m);
-        boundary = mask_union(boundary, outline(m, w, h));
-    }
-    ASSERT_GT(count(models), 2000u) << "no alias model in the paused frame";
-    const Mask edge = black_edge_pixels(edges, reference);
-    const double recall = share_near(boundary, edge, w, h, 1);
+    // Every id colour present in the frame (entity numbers are not known here): the benchmark
+    // report's measure (edgequality silhouettes).
+    ASSERT_GT(count(quality::any_id_pixels(reference)), 2000u) << "no alias model in the frame";
+    const quality::SilhouetteScore score = quality::score_silhouettes(reference, edges);
+    const double recall = score.recall;
     // Away from the id outlines an edge is either an inner silhouette (a fold of the model in
     // front of itself, which an id image cannot show) or a mistake; off the models entirely it
     // can only be a mistake.
-    const double off_outline = 1.0 - share_near(edge, boundary, w, h, 2);
-    const double off_models = 1.0 - share_near(edge, models, w, h, 2);
+    const double off_outline = 1.0 - score.precision;
+    const double off_models = 1.0 - score.on_models;
     EXPECT_GE(recall, 0.95);
     EXPECT_LT(off_outline, 0.30);
     EXPECT_LT(off_models, 0.01);
