@@ -276,7 +276,7 @@ def gpu_chart(plt, records, cells):
                 passes += [p for p in means if p not in passes]
     if not bars:
         return None
-    fig, ax = plt.subplots(figsize=(max(5, 0.9 * len(bars) + 2), 3.8))
+    fig, ax = plt.subplots(figsize=(max(5, 1.15 * len(bars) + 2), 3.8))
     bottoms = [0.0] * len(bars)
     for name in passes:
         heights = [means.get(name, 0.0) for _, means in bars]
@@ -343,8 +343,9 @@ QUALITY_NOTE = ("Line quality (bin/edgequality, the measure the tests use): the 
                 "over its object-id reference (tech_shading 3) of the same paused frame; recall = "
                 "outline pixels with a line within 1 px, precision = line pixels within 2 px of an "
                 "outline (inner folds of a model count against it), on models = within 2 px of a "
-                "model; flicker = share of line pixels that appear or vanish between consecutive "
-                "frames, against the same for the reference's outlines. Only technical draws lines.")
+                "model; flicker = share of line pixels that appear or vanish (no line within 1 px in "
+                "the other frame) between consecutive frames, against the same for the reference's "
+                "outlines. Only technical draws lines.")
 
 
 def machine_rows(machine, records):

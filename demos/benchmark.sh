@@ -23,7 +23,7 @@ styles="classic technical illustrative"
 sizes="640x480 1024x768"
 runs=3
 peer=auto
-gallery_frame=760  # demo.dem's monster gallery
+gallery_frame=""  # per demo when not given: see frame_of
 quality_frames=8   # consecutive frames for the line-flicker figure
 out=$root/build/benchmark
 while [ $# -gt 0 ]; do
@@ -65,16 +65,27 @@ echo "benchmark.sh: demos [$demos] styles [$styles] sizes [$sizes], $runs rounds
 "$root/demos/bench_timedemo.sh" --rounds "$runs" --plugins "$styles" --demos "$demos" \
     --res "$sizes" --peer "$peer" --out "$out" | grep --line-buffered -v '^|' || true
 
+# The frame the gallery and the line quality look at: --gallery-frame, else one with models in
+# view (LibreQuake's demo.dem: its monster gallery; demo2.dem: a row of weapons), else 760.
+frame_of() {
+    if [ -n "$gallery_frame" ]; then echo "$gallery_frame"; return; fi
+    case $1 in
+        demo2) echo 300 ;;
+        *) echo 760 ;;
+    esac
+}
+
 # The gallery: per demo, one engine run pauses at the frame and shoots it in every style.
 first_size=${sizes%% *}
 for demo in $demos; do
+    frame=$(frame_of "$demo")
     shots="pause 1"
     for style in $styles; do
-        shots="$shots; r_plugin $style; wait; wait; screenshot $out/gallery/${demo}_f${gallery_frame}_$style.png"
+        shots="$shots; r_plugin $style; wait; wait; screenshot $out/gallery/${demo}_f${frame}_$style.png"
     done
     SDL_VIDEODRIVER=offscreen "$engine" -userdir "$out/user" -basedir "$data" -game lq1 \
         -width "${first_size%x*}" -height "${first_size#*x}" -window +con_notifytime 0 \
-        +scr_centertime 0 +demo_at "$gallery_frame" "$shots; quit" +timedemo "$demo" +quit \
+        +scr_centertime 0 +demo_at "$frame" "$shots; quit" +timedemo "$demo" +quit \
         > "$out/logs/gallery_$demo.log" 2>&1 ||
         echo "benchmark.sh: gallery of $demo failed (see $out/logs/gallery_$demo.log)" >&2
 done
@@ -91,11 +102,12 @@ if [[ " $styles " == *" technical "* ]]; then
     reference_settings="$reference_settings; tech_shadows 0; tech_fade 0; tech_edge_colors 0"
     for demo in $demos; do
         frames_dir=$out/quality/$demo
+        frame=$(frame_of "$demo")
         mkdir -p "$frames_dir"
         at_frames=()
         pairs=()
         for ((k = 0; k < quality_frames; k++)); do
-            f=$((gallery_frame + k))
+            f=$((frame + k))
             at_frames+=(+demo_at "$f" "pause 1; $reference_settings; wait; wait; screenshot $frames_dir/ref_$f.png; tech_silhouettes 1; wait; wait; screenshot $frames_dir/lines_$f.png; pause 0")
             pairs+=("$frames_dir/ref_$f.png" "$frames_dir/lines_$f.png")
         done
@@ -108,7 +120,7 @@ if [[ " $styles " == *" technical "* ]]; then
                 > "$frames_dir/silhouettes.json" &&
             "$build/bin/edgequality" flicker "${pairs[@]}" --json > "$frames_dir/flicker.json"; then
             printf '{"demo": "%s", "style": "technical", "size": "%s", "first_frame": %d, "frames": %d, "silhouettes": %s, "flicker": %s}\n' \
-                "$demo" "$first_size" "$gallery_frame" "$quality_frames" \
+                "$demo" "$first_size" "$frame" "$quality_frames" \
                 "$(tr -d '\n' < "$frames_dir/silhouettes.json")" \
                 "$(tr -d '\n' < "$frames_dir/flicker.json")" >> "$out/quality.jsonl"
         else

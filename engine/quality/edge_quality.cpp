@@ -130,19 +130,22 @@ SilhouetteScore score_silhouettes(const RgbImage& reference, const RgbImage& dra
     return score;
 }
 
-double change_rate(std::span<const PixelMask> frames) {
+double change_rate(std::span<const PixelMask> frames, int radius) {
     if (frames.size() < 2) return 0.0;
+    // Pixels of `from` with no `to` pixel within the radius.
+    auto unmatched = [radius](const PixelMask& from, const PixelMask& to) {
+        size_t n = 0;
+        for (int y = 0; y < from.height; ++y) {
+            for (int x = 0; x < from.width; ++x) n += from.at(x, y) && !near(to, x, y, radius);
+        }
+        return n;
+    };
     double sum = 0;
     for (size_t i = 1; i < frames.size(); ++i) {
         const PixelMask& a = frames[i - 1];
         const PixelMask& b = frames[i];
-        size_t changed = 0, either = 0;
-        const size_t n = std::min(a.bits.size(), b.bits.size());
-        for (size_t p = 0; p < n; ++p) {
-            changed += a.bits[p] != b.bits[p];
-            either += a.bits[p] | b.bits[p];
-        }
-        sum += either ? static_cast<double>(changed) / static_cast<double>(either) : 0.0;
+        const size_t present = a.count() + b.count();
+        if (present) sum += double(unmatched(a, b) + unmatched(b, a)) / double(present);
     }
     return sum / static_cast<double>(frames.size() - 1);
 }

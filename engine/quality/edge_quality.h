@@ -62,14 +62,16 @@ struct SilhouetteScore {
 };
 SilhouetteScore score_silhouettes(const RgbImage& reference, const RgbImage& drawn);
 
-// Between consecutive masks: pixels set in one and not the other, over the pixels set in
-// either, averaged over the pairs (0 for fewer than two masks).
-double change_rate(std::span<const PixelMask> frames);
+// Between consecutive masks: the pixels that appeared (set in the second with none within
+// `radius` in the first) and vanished (the reverse), over the pixels set in both masks,
+// averaged over the pairs (0 for fewer than two masks). The radius lets a line move by a pixel
+// or be drawn wider than an outline without counting as a change.
+double change_rate(std::span<const PixelMask> frames, int radius = 1);
 
 struct FlickerScore {
     double lines = 0;     // change_rate of the frames' lines
     double outlines = 0;  // change_rate of the references' outlines (the objects' own motion)
-    double excess = 0;    // lines - outlines
+    double excess = 0;    // lines - outlines: what the lines change beyond the objects
     size_t frames = 0;
 };
 // `references[i]` and `drawn[i]` are frame i; both lists the same length and image size.

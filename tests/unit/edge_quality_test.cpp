@@ -115,11 +115,14 @@ TEST(EdgeQuality, RecallCountsTheOutlineCoveredWithinOnePixel) {
     EXPECT_EQ(quality::line_pixels(dark, dark).count(), 0u);
 }
 
-TEST(EdgeQuality, ChangeRateIsChangedOverPresentPixelsPerPair) {
-    PixelMask a{4, 1, {1, 1, 0, 0}}, b{4, 1, {0, 1, 1, 0}}, c{4, 1, {0, 1, 1, 0}};
+TEST(EdgeQuality, ChangeRateCountsPixelsWithNoMatchWithinTheRadius) {
+    PixelMask a{8, 1, {1, 1, 0, 0, 0, 0, 0, 0}}, b{8, 1, {0, 1, 1, 0, 0, 0, 0, 0}},
+        c{8, 1, {0, 0, 0, 0, 0, 0, 1, 1}};
     std::vector<PixelMask> frames{a, b, c};
-    // a -> b: 2 changed of 3 present; b -> c: 0 of 2.
-    EXPECT_NEAR(quality::change_rate(frames), (2.0 / 3.0 + 0.0) / 2.0, 1e-12);
+    // Radius 0, a -> b: pixel 0 vanished, pixel 2 appeared, of 4 present; b -> c: all 4 changed.
+    EXPECT_NEAR(quality::change_rate(frames, 0), (2.0 / 4.0 + 4.0 / 4.0) / 2.0, 1e-12);
+    // Radius 1: a one-pixel move is no change; c is 4 pixels away from b.
+    EXPECT_NEAR(quality::change_rate(frames, 1), (0.0 + 4.0 / 4.0) / 2.0, 1e-12);
     EXPECT_EQ(quality::change_rate(std::span<const PixelMask>(frames.data(), 1)), 0.0);
 }
 
@@ -136,7 +139,8 @@ TEST(EdgeQuality, FlickerIsWhatTheLinesChangeBeyondTheOutlines) {
     const double outline = 2 * 20 + 2 * 15 - 4;
     EXPECT_EQ(f.frames, 3u);
     EXPECT_EQ(f.outlines, 0.0);
-    EXPECT_NEAR(f.lines, 10.0 / (outline + 10.0), 1e-12);
+    // Each pair: 10 pixels appear or vanish, of outline + (outline + 10) present.
+    EXPECT_NEAR(f.lines, 10.0 / (2 * outline + 10.0), 1e-12);
     EXPECT_NEAR(f.excess, f.lines, 1e-12);
 }
 
