@@ -71,6 +71,28 @@ TEST(IllustrativeDemo, DemoPlaysToTheEndWithSwapsAmongEveryStyle) {
     EXPECT_TRUE(lines_containing(out, "keeping").empty()) << out;
 }
 
+// demo2.dem (its map restart included) under illustrative, swapped to the other styles and back.
+TEST(IllustrativeDemo, Demo2PlaysToTheEndWithSwapsAmongEveryStyle) {
+    const SharedRun& run = shared_nprquake_run(
+        "demo2_illustrative",
+        [](const std::string& dir) {
+            auto args = engine_runs::base_args(dir, data_root(), "lq1");
+            engine_runs::add(args, {"+r_plugin", "illustrative"});
+            engine_runs::demo_at(args, 400, "r_plugin technical");
+            engine_runs::demo_at(args, 700, "r_plugin illustrative");
+            engine_runs::demo_at(args, 1000, "r_plugin classic; wait; r_plugin illustrative");
+            engine_runs::add(args, {"+timedemo", "demo2", "+quit"});
+            return args;
+        },
+        600);
+    ASSERT_NO_FATAL_FAILURE(expect_whole_timedemo(run, "demo2.dem"));
+    const std::string& out = run.result.out;
+    // Loaded at start-up, at frame 700 and after classic at 1000.
+    EXPECT_EQ(lines_containing(out, "renderer: illustrative").size(), 3u) << out;
+    EXPECT_EQ(lines_containing(out, "renderer: technical").size(), 1u) << out;
+    EXPECT_TRUE(lines_containing(out, "keeping").empty()) << out;
+}
+
 TEST(IllustrativeDemo, ThePausedFrameShowsTheStylesModelsAndTermsOnTheirOwn) {
     const SharedRun& run = demo_illustrative();
     const RgbImage styled = load(run, "illustrative"), classic = load(run, "classic");
