@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 
 #include "fs/vfs_path.h"
 
@@ -48,9 +49,14 @@ long pak_number(const std::string& key) {
 
 Result<LooseScan> scan_loose_files(const std::string& dir) {
     std::error_code ec;
-    fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+    fs::recursive_directory_iterator it(dir,
+                                        fs::directory_options::skip_permission_denied |
+                                            fs::directory_options::follow_directory_symlink,
+                                        ec);
     if (ec) return Error{dir, 0, "cannot list directory: " + ec.message()};
     LooseScan scan;
+    // Directories walked, by their real path: what stops a symlink loop.
+    std::set<fs::path> walked{fs::weakly_canonical(dir, ec)};
     for (; it != fs::recursive_directory_iterator(); it.increment(ec)) {
         if (ec) return Error{dir, 0, "cannot list directory: " + ec.message()};
         const fs::directory_entry& entry = *it;
@@ -58,7 +64,19 @@ Result<LooseScan> scan_loose_files(const std::string& dir) {
             if (entry.is_directory(ec)) it.disable_recursion_pending();
             continue;
         }
-        if (!entry.is_regular_file(ec)) continue;  // directories, sockets, broken links
+        if (entry.is_directory(ec)) {
+            const fs::path real = fs::canonical(entry.path(), ec);
+            if (ec || !walked.insert(real).second) {
+                it.disable_recursion_pending();
+                scan.warnings.push_back(
+                    dir + ": not following '" +
+                    entry.path().lexically_relative(dir).generic_string() + "' (it leads to " +
+                    (ec ? "nowhere readable" : real.string() + ", walked already") + ")");
+                ec.clear();
+            }
+            continue;
+        }
+        if (!entry.is_regular_file(ec)) continue;  // sockets, broken links
         uint64_t size = entry.file_size(ec);
         if (ec) continue;  // vanished while we walked
         std::string relative = entry.path().lexically_relative(dir).generic_string();

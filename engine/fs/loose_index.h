@@ -22,8 +22,11 @@ struct LooseScan {
 };
 
 // Walks `dir` recursively. Hidden entries (".git", ".DS_Store") are skipped: they are never
-// game data and can be large. Directory symlinks are not followed (no loops). Two files whose
-// names differ only in case keep the one whose on-disk name sorts first, with a warning.
+// game data and can be large. Symbolic links are followed, wherever they lead (a `progs/` linked
+// to data kept elsewhere is the usual case), each directory entered once: a link back to a
+// directory already walked (a loop, or a second link to the same place) is not entered again,
+// with a warning. Two files whose names differ only in case keep the one whose on-disk name
+// sorts first, with a warning.
 Result<LooseScan> scan_loose_files(const std::string& dir);
 
 // The numbered paks ("pak0.pak", "PAK12.PAK", ...) at the top of a scanned game dir, in numeric

@@ -33,10 +33,16 @@ struct Options {
     protocol::ProtocolState initial;
 };
 
+constexpr const char* kUsage =
+    "usage: demotool info FILE.dem [--json] [--protocol N]\n"
+    "       demotool dump FILE.dem [--from N] [--count M] [--protocol N]\n"
+    "  info: protocol, map, precaches, blocks, message histogram, duration\n"
+    "  dump: the decoded messages of blocks [N, N + M)\n"
+    "  --protocol: the protocol assumed before the first svc_serverinfo (default 15)\n"
+    "  Options may come before or after the file.\n";
+
 int usage() {
-    std::fprintf(stderr,
-                 "usage: demotool info FILE.dem [--json] [--protocol N]\n"
-                 "       demotool dump FILE.dem [--from N] [--count M] [--protocol N]\n");
+    std::fputs(kUsage, stderr);
     return kExitUsage;
 }
 
@@ -49,11 +55,12 @@ bool parse_number(const char* text, size_t& out) {
 }
 
 // Returns false on a malformed command line.
+// Returns false on a malformed command line. The command comes first; options and the file
+// in any order after it.
 bool parse_options(int argc, char** argv, Options& o) {
     if (argc < 3) return false;
     o.command = argv[1];
-    o.file = argv[2];
-    for (int i = 3; i < argc; ++i) {
+    for (int i = 2; i < argc; ++i) {
         std::string_view arg = argv[i];
         bool has_value = i + 1 < argc;
         size_t n = 0;
@@ -66,11 +73,13 @@ bool parse_options(int argc, char** argv, Options& o) {
         } else if (arg == "--protocol" && has_value && parse_number(argv[++i], n) &&
                    protocol::is_supported(static_cast<int32_t>(n))) {
             o.initial.protocol = static_cast<int>(n);
+        } else if (!arg.starts_with("-") && o.file.empty()) {
+            o.file = arg;
         } else {
             return false;
         }
     }
-    return o.command == "info" || o.command == "dump";
+    return (o.command == "info" || o.command == "dump") && !o.file.empty();
 }
 
 std::string protocol_name(int p) {
@@ -391,6 +400,12 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        if (std::string_view(argv[i]) == "--help" || std::string_view(argv[i]) == "-h") {
+            std::fputs(kUsage, stdout);
+            return kExitOk;
+        }
+    }
     Options options;
     if (!parse_options(argc, argv, options)) return usage();
     return run(options);

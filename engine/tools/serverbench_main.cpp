@@ -54,11 +54,14 @@ struct Options {
     int skill = 1;
 };
 
-bool parse(int argc, char** argv, Options& o) {
+bool parse(int argc, char** argv, Options& o, bool& help) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool has_value = i + 1 < argc;
-        if (a == "-h" || a == "--help") return false;
+        if (a == "-h" || a == "--help") {
+            help = true;
+            return false;
+        }
         if (!has_value) return false;
         const std::string v = argv[++i];
         if (a == "-basedir")
@@ -83,11 +86,13 @@ bool parse(int argc, char** argv, Options& o) {
 
 int main(int argc, char** argv) {
     Options o;
-    if (!parse(argc, argv, o)) {
-        std::puts(
+    bool help = false;
+    if (!parse(argc, argv, o, help)) {
+        std::fputs(
             "usage: serverbench [-basedir DIR] [-game MOD] [--map NAME] [--seconds S] "
-            "[--hunting FRACTION] [--skill N]");
-        return argc > 1 && std::string(argv[1]).rfind("-h", 0) == 0 ? 0 : 2;
+            "[--hunting FRACTION] [--skill N]\n",
+            help ? stdout : stderr);
+        return help ? 0 : 2;
     }
     auto vfs = Vfs::mount(VfsConfig::for_game(o.basedir, o.game));
     if (!vfs) {

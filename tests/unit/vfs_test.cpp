@@ -201,6 +201,24 @@ TEST(VfsNames, CaseTwinLooseFilesKeepOneWithAWarning) {
     EXPECT_TRUE(contains(warnings[0], "ignoring 'autoexec.cfg'")) << warnings[0];
 }
 
+// A game directory whose progs/ is a symbolic link to data kept elsewhere is read through it;
+// a link back up the tree (a loop) is walked once, with a warning, not forever.
+TEST(VfsNames, SymlinkedDirectoriesAreReadAndLoopsAreNotFollowed) {
+    TempGameTree tree;
+    tree.write("elsewhere/progs/player.mdl", "a model");
+    tree.write("base/id1/maps/e1m1.bsp", "a map");
+    std::filesystem::create_directory_symlink(tree.path("elsewhere/progs"),
+                                              tree.path("base/id1/progs"));
+    std::filesystem::create_directory_symlink(tree.path("base/id1"), tree.path("base/id1/maps/up"));
+    Vfs vfs = mount_or_die(VfsConfig::for_game(tree.path("base")));
+    EXPECT_EQ(read_text(vfs, "progs/player.mdl"), "a model");
+    EXPECT_EQ(read_text(vfs, "maps/e1m1.bsp"), "a map");
+    EXPECT_FALSE(vfs.read("maps/up/maps/e1m1.bsp").ok()) << "the loop was walked";
+    bool warned = false;
+    for (const std::string& w : vfs.warnings()) warned |= contains(w, "not following 'maps/up'");
+    EXPECT_TRUE(warned);
+}
+
 TEST(VfsPaks, NumberedPaksStackInNumericNotLexicalOrder) {
     TempGameTree tree;
     tree.write_pak("base/id1/pak2.pak", {{"x.txt", "pak2"}});

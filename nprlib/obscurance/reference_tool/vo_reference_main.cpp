@@ -18,10 +18,13 @@
 
 namespace {
 
+constexpr const char* kUsage =
+    "usage: vo_reference SCENE OUT.png [--radius R] [--directions-per-side K] [--threads N]\n"
+    "  SCENE: a frame's geometry as the engine's vo_dump_scene writes it; OUT.png: its\n"
+    "  ray-traced volumetric obscurance (grey, 255 = open). Options may come anywhere.\n";
+
 int usage() {
-    std::fprintf(stderr,
-                 "usage: vo_reference SCENE OUT.png [--radius R] [--directions-per-side K] "
-                 "[--threads N]\n");
+    std::fputs(kUsage, stderr);
     return 2;
 }
 
@@ -35,24 +38,33 @@ bool parse_number(const char* text, double lo, double hi, double& out) {
 
 int main(int argc, char** argv) {
     using namespace nq::npr::obscurance;
-    if (argc < 3) return usage();
-    const std::string scene_path = argv[1], out_path = argv[2];
+    std::vector<std::string> files;
     RaytraceOptions options;
-    for (int i = 3; i < argc; i += 2) {
-        if (i + 1 >= argc) return usage();
-        const std::string flag = argv[i];
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h") {
+            std::fputs(kUsage, stdout);
+            return 0;
+        }
+        if (arg.rfind("--", 0) != 0) {
+            files.push_back(arg);
+            continue;
+        }
         double value = 0.0;
-        if (flag == "--radius" && parse_number(argv[i + 1], 0.01, 4096.0, value)) {
+        const char* text = i + 1 < argc ? argv[++i] : "";
+        if (arg == "--radius" && parse_number(text, 0.01, 4096.0, value)) {
             options.radius = float(value);
-        } else if (flag == "--directions-per-side" && parse_number(argv[i + 1], 1, 256, value)) {
+        } else if (arg == "--directions-per-side" && parse_number(text, 1, 256, value)) {
             options.directions_per_side = int(value);
-        } else if (flag == "--threads" && parse_number(argv[i + 1], 0, 1024, value)) {
+        } else if (arg == "--threads" && parse_number(text, 0, 1024, value)) {
             options.threads = int(value);
         } else {
-            std::fprintf(stderr, "vo_reference: bad option %s %s\n", argv[i], argv[i + 1]);
+            std::fprintf(stderr, "vo_reference: bad option %s %s\n", arg.c_str(), text);
             return usage();
         }
     }
+    if (files.size() != 2) return usage();
+    const std::string scene_path = files[0], out_path = files[1];
     std::ifstream in(scene_path, std::ios::binary);
     if (!in) {
         std::fprintf(stderr, "vo_reference: cannot read %s\n", scene_path.c_str());
