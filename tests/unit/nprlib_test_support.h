@@ -1,4 +1,4 @@
-// Shared by the nprlib_*_test.cpp files: a hidden SDL window with an OpenGL 3.3+ core context on
+// Shared by the nprlib_*_test.cpp files: a hidden window with an OpenGL 3.3+ core context on
 // SDL's offscreen driver (Mesa llvmpipe, no display needed) rendering into a 128x128 RGBA8 +
 // depth framebuffer, a synthetic palette with known colours, a Quake camera built with glm, and
 // builders that assemble the ABI structs (nqr_model & co.) by hand, keeping their storage alive.
@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 
 #include "nqr_renderer.h"
 #include "video/resident_libraries.h"
+#include "video_test_support.h"
 
 namespace nq::npr::test {
 
@@ -55,42 +57,24 @@ inline int brightness(const Rgb& c) {
 
 class GlTestContext {
   public:
-    // Creates window, context and framebuffer; error() says why when it could not.
+    // Creates window, context (the engine's VideoWindow, as the video tests make it) and
+    // framebuffer; error() says why when it could not.
     GlTestContext() {
-        setenv("SDL_VIDEODRIVER", "offscreen", 1);
-        if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-            error_ = std::string("SDL_Init: ") + SDL_GetError();
+        auto created = nq::test::make_offscreen_window(kSize, kSize);
+        if (!created) {
+            error_ = created.error().message;
             return;
         }
-        SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
-        SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
-        SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
-        SDL_GL_SetAttribute(SDL_GL_CONTEXT_FLAGS, SDL_GL_CONTEXT_FORWARD_COMPATIBLE_FLAG);
-        window_ = SDL_CreateWindow("nprlib test", 0, 0, kSize, kSize,
-                                   SDL_WINDOW_OPENGL | SDL_WINDOW_HIDDEN);
-        if (!window_) {
-            error_ = std::string("SDL_CreateWindow: ") + SDL_GetError();
-            return;
-        }
-        context_ = SDL_GL_CreateContext(window_);
-        if (!context_) {
-            error_ = std::string("SDL_GL_CreateContext: ") + SDL_GetError();
-            return;
-        }
-        SDL_GL_MakeCurrent(window_, context_);
-        keep_loaded_libraries_resident();
+        window_.emplace(std::move(*created));
         create_framebuffer();
     }
 
     ~GlTestContext() {
-        if (context_) {
+        if (window_) {
             glDeleteFramebuffers(1, &framebuffer_);
             glDeleteTextures(1, &colour_);
             glDeleteRenderbuffers(1, &depth_);
-            SDL_GL_DeleteContext(context_);
         }
-        if (window_) SDL_DestroyWindow(window_);
-        SDL_Quit();
     }
 
     const std::string& error() const { return error_; }
@@ -171,8 +155,7 @@ class GlTestContext {
     }
 
     std::string error_;
-    SDL_Window* window_ = nullptr;
-    SDL_GLContext context_ = nullptr;
+    std::optional<VideoWindow> window_;
     GLuint framebuffer_ = 0, colour_ = 0, depth_ = 0;
 };
 

@@ -5,6 +5,7 @@
 
 #include "common/file_io.h"
 #include "video/bench_record.h"
+#include "support/engine_run.h"
 #include "video_test_support.h"
 
 namespace nq {
@@ -60,7 +61,7 @@ TEST(VideoBenchJson, StringsAreEscaped) {
 }
 
 TEST(VideoBenchJson, AppendsOneLinePerRun) {
-    test::ScratchDir dir;
+    test::TempDir dir("nq_video");
     std::string path = dir.file("bench.jsonl");
     BenchRecord first = sample_record(), second = sample_record();
     second.plugin = "technical";

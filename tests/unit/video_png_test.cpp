@@ -6,12 +6,13 @@
 #include "common/file_io.h"
 #include "video/png_io.h"
 #include "video/screenshot.h"
+#include "support/engine_run.h"
 #include "video_test_support.h"
 
 namespace nq {
 namespace {
 
-using test::ScratchDir;
+using test::TempDir;
 
 uint32_t big_endian_u32(const std::vector<uint8_t>& b, size_t at) {
     return uint32_t(b[at]) << 24 | uint32_t(b[at + 1]) << 16 | uint32_t(b[at + 2]) << 8 |
@@ -30,7 +31,7 @@ void touch(const std::string& path) {
 }
 
 TEST(VideoPng, WritesAn8BitRgbPngWithTheRightHeader) {
-    ScratchDir dir;
+    TempDir dir("nq_video");
     std::string path = dir.file("g.png");
     ASSERT_EQ(write_png(path, 5, 3, gradient_5x3()), "");
     auto bytes = read_file(path);
@@ -48,7 +49,7 @@ TEST(VideoPng, WritesAn8BitRgbPngWithTheRightHeader) {
 }
 
 TEST(VideoPng, ReadBackGivesTheSamePixels) {
-    ScratchDir dir;
+    TempDir dir("nq_video");
     std::string path = dir.file("g.png");
     ASSERT_EQ(write_png(path, 5, 3, gradient_5x3()), "");
     auto image = read_png(path);
@@ -59,7 +60,7 @@ TEST(VideoPng, ReadBackGivesTheSamePixels) {
 }
 
 TEST(VideoPng, WrongBufferSizeIsRefused) {
-    ScratchDir dir;
+    TempDir dir("nq_video");
     std::vector<uint8_t> short_buffer(5 * 3 * 3 - 1);
     std::string error = write_png(dir.file("s.png"), 5, 3, short_buffer);
     EXPECT_NE(error.find("44 bytes"), std::string::npos) << error;
@@ -74,7 +75,7 @@ TEST(VideoPng, UnwritablePathNamesThePath) {
 }
 
 TEST(VideoPng, NotAPngIsAnErrorNamingTheFile) {
-    ScratchDir dir;
+    TempDir dir("nq_video");
     std::string path = dir.file("fake.png");
     std::ofstream(path) << "this is not a png file at all";
     auto image = read_png(path);
@@ -85,27 +86,27 @@ TEST(VideoPng, NotAPngIsAnErrorNamingTheFile) {
 }
 
 TEST(VideoScreenshotNames, FirstFreeNameInOrder) {
-    ScratchDir dir;
-    auto first = next_screenshot_path(dir.path().string());
+    TempDir dir("nq_video");
+    auto first = next_screenshot_path(dir.path());
     ASSERT_TRUE(first) << first.error().message;
     EXPECT_EQ(*first, dir.file("nprq00.png"));
 
     touch(dir.file("nprq00.png"));
     touch(dir.file("nprq01.png"));
     touch(dir.file("nprq03.png"));
-    auto next = next_screenshot_path(dir.path().string());
+    auto next = next_screenshot_path(dir.path());
     ASSERT_TRUE(next);
     EXPECT_EQ(*next, dir.file("nprq02.png"));  // a gap is reused, as Quake does
 }
 
 TEST(VideoScreenshotNames, AllHundredTakenIsAnError) {
-    ScratchDir dir;
+    TempDir dir("nq_video");
     for (int i = 0; i < 100; ++i) {
         char name[16];
         std::snprintf(name, sizeof name, "nprq%02d.png", i);
         touch(dir.file(name));
     }
-    auto next = next_screenshot_path(dir.path().string());
+    auto next = next_screenshot_path(dir.path());
     ASSERT_FALSE(next);
     EXPECT_NE(next.error().message.find("nprq99.png are taken"), std::string::npos);
 }

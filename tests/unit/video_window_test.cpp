@@ -8,13 +8,14 @@
 #include "gl/handles.h"
 #include "video/png_io.h"
 #include "video/screenshot.h"
+#include "support/engine_run.h"
 #include "video_test_support.h"
 
 namespace nq {
 namespace {
 
 using test::make_offscreen_window;
-using test::ScratchDir;
+using test::TempDir;
 
 constexpr int kWidth = 64, kHeight = 48;
 
@@ -69,11 +70,11 @@ TEST(VideoWindow, CreatesCoreContextOfAtLeast33AndReportsIt) {
 TEST(VideoWindow, ClearedScreenSurvivesScreenshotToPngAndBack) {
     auto window = make_offscreen_window();
     ASSERT_TRUE(window) << window.error().message;
-    ScratchDir dir;
+    TempDir dir("nq_video");
     const Rgb colour{51, 102, 204};
     clear_to(colour);
 
-    auto path = next_screenshot_path(dir.path().string());
+    auto path = next_screenshot_path(dir.path());
     ASSERT_TRUE(path) << path.error().message;
     EXPECT_EQ(std::filesystem::path(*path).filename(), "nprq00.png");
     ASSERT_EQ(save_screenshot(*path, 0, kWidth, kHeight), "");
@@ -88,7 +89,7 @@ TEST(VideoWindow, ClearedScreenSurvivesScreenshotToPngAndBack) {
 TEST(VideoWindow, ScreenshotPutsTheTopOfTheScreenFirst) {
     auto window = make_offscreen_window();
     ASSERT_TRUE(window) << window.error().message;
-    ScratchDir dir;
+    TempDir dir("nq_video");
     const Rgb blue{0, 0, 255}, red{255, 0, 0};
     clear_to(blue);
     // GL's origin is bottom-left: y in [24, 48) is the top half of the window.
