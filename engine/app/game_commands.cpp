@@ -69,8 +69,7 @@ void Engine::register_game_cvars() {
                              "scratch2", "scratch3", "scratch4", "registered", "pausable"}) {
         CvarSpec spec;
         spec.name = name;
-        // One character assigned, not a literal: GCC 12's -Wrestrict false positive.
-        spec.default_value.assign(1, std::string_view(name) == "pausable" ? '1' : '0');
+        spec.default_value = std::string_view(name) == "pausable" ? "1" : "0";
         c.register_cvar(spec);
     }
 }

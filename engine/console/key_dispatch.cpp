@@ -18,10 +18,7 @@ void KeyDispatch::key_down(std::string_view key, bool repeat) {
     // A second press without a release (lost event): release the first one before.
     key_up(key);
     commands_.add_text(*command + " " + std::string(key) + "\n");
-    // Built by appending: GCC 12 warns (-Wrestrict, a false positive) on "-" + std::string.
-    std::string release(1, '-');
-    release.append(*command, 1).append(1, ' ').append(key).append(1, '\n');
-    held_.push_back({std::string(key), std::move(release)});
+    held_.push_back({std::string(key), "-" + command->substr(1) + " " + std::string(key) + "\n"});
 }
 
 void KeyDispatch::key_up(std::string_view key) {

@@ -10,15 +10,17 @@ namespace {
 // Running state of the pass that the summary itself does not keep.
 struct Scan {
     bool map_changed = false;            // a later serverinfo restarts the server clock
-    std::optional<float> segment_first;  // first svc_time since the last serverinfo
-    std::optional<float> segment_last;
+    // The first and last svc_time since the last serverinfo (a plain pair with a flag: GCC 12
+    // cannot see that two optionals are always set together, and warns).
+    bool segment_open = false;
+    float segment_first = 0.0f;
+    float segment_last = 0.0f;
 };
 
 // Adds the svc_time span of the map segment that just ended to the playback time.
 void close_segment(DemoSummary& s, Scan& scan) {
-    if (scan.segment_first) s.playback_time += *scan.segment_last - *scan.segment_first;
-    scan.segment_first.reset();
-    scan.segment_last.reset();
+    if (scan.segment_open) s.playback_time += scan.segment_last - scan.segment_first;
+    scan.segment_open = false;
 }
 
 void note_server_info(const svc::ServerInfo& si, DemoSummary& s, Scan& scan) {
@@ -43,7 +45,8 @@ void note_time(float t, DemoSummary& s, Scan& scan) {
     }
     s.last_time = t;
     scan.map_changed = false;
-    if (!scan.segment_first) scan.segment_first = t;
+    if (!scan.segment_open) scan.segment_first = t;
+    scan.segment_open = true;
     scan.segment_last = t;
     ++s.time_messages;
 }

@@ -90,8 +90,7 @@ Result<nqr_model_id> ModelCache::load_world(const std::string& map_name) {
     const size_t submodels = (*data)->bsp().models.size();
     world_id_ = add(RenderModel::brush(map_name, *data, 0));
     for (size_t i = 1; i < submodels; ++i) {
-        std::string name(1, '*');  // not "*" + string: GCC 12's -Wrestrict false positive
-        add(RenderModel::brush(name.append(std::to_string(i)), *data, i));
+        add(RenderModel::brush("*" + std::to_string(i), *data, i));
     }
     return world_id_;
 }

@@ -14,7 +14,7 @@ void put_u32(std::vector<uint8_t>& out, uint32_t v) {
     put_u16(out, v >> 16);
 }
 void put_id(std::vector<uint8_t>& out, const char* id) {
-    out.insert(out.end(), id, id + 4);
+    for (int i = 0; i < 4; ++i) out.push_back(uint8_t(id[i]));
 }
 
 void put_chunk(std::vector<uint8_t>& out, const char* id, const std::vector<uint8_t>& body,

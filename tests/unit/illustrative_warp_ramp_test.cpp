@@ -29,7 +29,9 @@ std::vector<uint8_t> test_palette() {
 }
 
 std::vector<uint8_t> lmp_bytes(int32_t width, int32_t height, const std::vector<uint8_t>& pixels) {
-    std::vector<uint8_t> out(8);
+    std::vector<uint8_t> out;
+    out.reserve(8 + pixels.size());  // GCC 12 -Warray-bounds false positive on insert otherwise
+    out.resize(8);
     for (int i = 0; i < 4; ++i) {
         out[i] = uint8_t(uint32_t(width) >> (8 * i));
         out[4 + i] = uint8_t(uint32_t(height) >> (8 * i));

@@ -131,8 +131,7 @@ class MapLightPredictor {
         }
         std::vector<const nq::BspTexture*> frames;
         for (char frame = '0'; frame <= '9'; ++frame) {
-            std::string name = {'+', frame};  // not "+" + string: GCC 12's -Wrestrict
-            name += texture.name.substr(2);
+            const std::string name = "+" + std::string(1, frame) + texture.name.substr(2);
             const auto found =
                 std::find_if(bsp_.textures.begin(), bsp_.textures.end(),
                              [&](const nq::BspTexture& t) { return t.name == name; });
