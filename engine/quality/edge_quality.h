@@ -26,7 +26,8 @@ struct Rgb8 {
 };
 
 // The id colour of entity `number` (components 0, 128 or 255, no greys; the six pure colours
-// first), as the technical plugin paints it.
+// first), as the technical plugin paints it. Written out here, not taken from the plugin: a
+// measure of the renderer must not take the renderer's word.
 Rgb8 id_colour(uint32_t number);
 
 // One byte per pixel, row-major.
