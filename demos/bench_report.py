@@ -54,6 +54,7 @@ class Cell:
         self.records = []  # the -benchjson records of the runs that worked
         self.frame_files = []
         self.startup = []
+        self.tails = []  # (99th / median, 1% low / average fps) per run that has frame times
 
     def add(self, r):
         if r.get("failed") or r.get("fps") is None:
@@ -67,6 +68,9 @@ class Cell:
             self.frame_files.append(r["frames_file"])
         if r.get("startup_s") is not None:
             self.startup.append(r["startup_s"])
+        tail = tail_of(r)
+        if tail:
+            self.tails.append(tail)
 
     def median(self):
         return statistics.median(self.fps) if self.fps else None
@@ -74,6 +78,45 @@ class Cell:
     def percentile_median(self, field):
         values = [rec[field] for rec in self.records if field in rec]
         return statistics.median(values) if values else None
+
+
+def tail_of(r):
+    """(99th / median, 1% low / average) of one run: ours from its -benchjson record,
+    QuakeSpasm's from quakespasm_tail.sh's figures (bench_timedemo.sh --peer-tail)."""
+    rec = r.get("record") or {}
+    if rec.get("median_ms") and rec.get("p99_ms") and rec.get("fps"):
+        return rec["p99_ms"] / rec["median_ms"], rec.get("low1_fps", 0) / rec["fps"]
+    tail = r.get("tail") or {}
+    if tail.get("median_ms") and tail.get("p99_ms") and tail.get("avg_fps"):
+        return tail["p99_ms"] / tail["median_ms"], tail["low1_fps"] / tail["avg_fps"]
+    return None
+
+
+# Issue 19's targets for a smooth game: the slow frames no slower than this, relative to the run.
+TAIL_MAX_P99_OVER_MEDIAN = 2.5
+TAIL_MIN_LOW_OVER_AVG = 0.4
+TAIL_NOTE = ("Frame-time tail per run, in run order: the 99th-percentile frame over the median "
+             "frame, and the 1%% low (average fps over the slowest 1%% of frames) over the average "
+             "fps. A run meets the targets at 99th/median <= %.1f and 1%% low/avg >= %.1f. "
+             "QuakeSpasm's come from its host_speeds log (whole milliseconds), with "
+             "bench_timedemo.sh --peer-tail." % (TAIL_MAX_P99_OVER_MEDIAN, TAIL_MIN_LOW_OVER_AVG))
+TAIL_HEADER = ["demo", "size", "engine / style", "99th/median per run", "1% low/avg per run",
+               "runs meeting both"]
+
+
+def tail_rows(records, cells):
+    rows = []
+    for key in cell_keys(records):
+        for column in columns_of(records):
+            c = cells[key].get(column)
+            if c is None or not c.tails:
+                continue
+            met = sum(1 for p99, low in c.tails
+                      if p99 <= TAIL_MAX_P99_OVER_MEDIAN and low >= TAIL_MIN_LOW_OVER_AVG)
+            rows.append([key[0], key[1], column, ", ".join("%.2f" % t[0] for t in c.tails),
+                         ", ".join("%.2f" % t[1] for t in c.tails),
+                         "%d of %d" % (met, len(c.tails))])
+    return rows
 
 
 def collect(records):
@@ -150,6 +193,9 @@ def write_summary(directory, records, cells):
     failures = failure_lines(records, cells)
     if failures:
         text += "\nFailed runs (no number reported for them):\n\n" + "\n".join(failures) + "\n"
+    tails = tail_rows(records, cells)
+    if tails:
+        text += "\n" + TAIL_NOTE + "\n\n" + markdown_table(TAIL_HEADER, tails) + "\n"
     with open(os.path.join(directory, "summary.md"), "w") as f:
         f.write(text)
     print(text, end="")
@@ -394,9 +440,12 @@ def write_report(directory, records, cells, gallery, machine, images):
     if failures:
         md += ["Failed runs (no number reported for them):", ""] + failures + [""]
     md += ["Ratios compare medians over runs of the same cell; QuakeSpasm reports fps only "
-           "(no frame times, no start-up time).", ""]
+           "(no start-up time; frame times only with --peer-tail).", ""]
     for name, title, _ in charts:
         md += ["![%s](images/%s)" % (title, name), ""]
+    tails = tail_rows(records, cells)
+    if tails:
+        md += [TAIL_NOTE, "", markdown_table(TAIL_HEADER, tails), ""]
     rows = startup_rows(records, cells)
     if rows:
         md += ["Start-up to first frame (s):", "",
@@ -418,9 +467,12 @@ def write_report(directory, records, cells, gallery, machine, images):
         body.append("<p>Failed runs (no number reported for them):</p><ul>%s</ul>" % "".join(
             "<li>%s</li>" % html.escape(line[2:]) for line in failures))
     body.append("<p>Ratios compare medians over runs of the same cell; QuakeSpasm reports fps "
-                "only (no frame times, no start-up time).</p>")
+                "only (no start-up time; frame times only with --peer-tail).</p>")
     for _, title, png in charts:
         body.append("<h2>%s</h2>%s" % (html.escape(title), img_tag(png, title)))
+    if tails:
+        body.append("<h2>Frame-time tail</h2><p>%s</p>%s" % (
+            html.escape(TAIL_NOTE), html_table(TAIL_HEADER, tails)))
     if rows:
         body.append(html_table(["style", "runs", "median s", "min–max s"], rows))
     if quality:

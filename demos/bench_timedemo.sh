@@ -6,11 +6,15 @@
 #
 # usage: demos/bench_timedemo.sh [--rounds N] [--plugins "classic technical"] [--demos "demo demo2"]
 #                                [--res "640x480 1024x768"] [--no-peer | --peer quakespasm]
-#                                [--trace] [--out DIR]
+#                                [--trace] [--base DIR] [--peer-tail] [--out DIR]
 #   --demos   demo names in the game data, or paths of .dem files (e.g. demos/record_gameplay.sh's
 #             recordings: copied into the run's user dir; QuakeSpasm gets the same file)
 #   --trace   also write every run's per-frame trace (-benchtrace) to DIR/traces/; read them
 #             with demos/frame_trace.py
+#   --base    another build (its build dir, e.g. of the commit before a change) to run right
+#             before each of ours with the same style; its runs are the style "STYLE@base"
+#   --peer-tail  time QuakeSpasm with demos/quakespasm_tail.sh, which also logs its every frame
+#             (its 99th percentile and 1% low go into the report's tail table)
 # env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
 # Output: one line per run on stdout with a progress count and an estimate of the time left;
 # in --out (default build/bench): results.jsonl (one record per run: fps, the -benchjson record
@@ -27,6 +31,8 @@ demos="demo demo2"
 resolutions="640x480 1024x768"
 peer=1
 trace=0
+base=""
+peer_tail=0
 out=$root/build/bench
 while [ $# -gt 0 ]; do
     case $1 in
@@ -38,11 +44,16 @@ while [ $# -gt 0 ]; do
         --peer) [ "$2" = quakespasm ] && peer=1 || peer=0; shift 2 ;;
         --out) out=$2; shift 2 ;;
         --trace) trace=1; shift ;;
+        --base) base=$2; shift 2 ;;
+        --peer-tail) peer_tail=1; shift ;;
         *) echo "bench_timedemo.sh: unknown option $1" >&2; exit 2 ;;
     esac
 done
 engine=$build/bin/nprquake
 [ -x "$engine" ] || { echo "bench_timedemo.sh: build first ($engine missing)" >&2; exit 1; }
+if [ -n "$base" ] && [ ! -x "$base/bin/nprquake" ]; then
+    echo "bench_timedemo.sh: --base $base: no $base/bin/nprquake" >&2; exit 1
+fi
 [ -d "$data/lq1" ] || { echo "bench_timedemo.sh: no game data at $data/lq1" >&2; exit 1; }
 peer_script=$root/../shared/tools/quakespasm_timedemo.sh
 if [ $peer = 1 ] && [ ! -x "$peer_script" ]; then
@@ -67,10 +78,10 @@ json_string() {
     printf '"%s"' "$(printf '%s' "$1" | sed 's/\\/\\\\/g; s/"/\\"/g' | tr -d '\000-\037')"
 }
 
-run_ours() {  # round plugin demo WxH
-    local round=$1 plugin=$2 demo res=$4
+run_ours() {  # round plugin demo WxH [engine label]
+    local round=$1 plugin=$2 demo res=$4 engine=${5:-$engine} label=${6:-$2}
     demo=$(demo_name "$3")
-    local w=${res%x*} h=${res#*x} name="nprquake_${plugin}_${demo}_${res}_r${round}"
+    local w=${res%x*} h=${res#*x} name="nprquake_${label}_${demo}_${res}_r${round}"
     local trace_args=()
     [ $trace = 1 ] && trace_args=(-benchtrace "$out/traces/$name.tsv")
     local rec=$out/rec.json frames=$out/frames/$name.txt log=$out/logs/$name.log status=0
@@ -88,30 +99,44 @@ run_ours() {  # round plugin demo WxH
         failure=${failure:-exit status $status, no timedemo line}
         fps=""
     fi
-    echo "nprquake:$plugin $demo $res ${fps:-FAILED${failure:+ ($failure)}}"
+    echo "nprquake:$label $demo $res ${fps:-FAILED${failure:+ ($failure)}}"
     printf '{"engine":"nprquake","plugin":"%s","demo":"%s","res":"%s","round":%s,"fps":%s,"failed":%s,"exit_status":%s,"failure":%s,"startup_s":%s,"frames_file":%s,"record":%s}\n' \
-        "$plugin" "$demo" "$res" "$round" "${fps:-null}" "$([ -n "$fps" ] && echo false || echo true)" \
+        "$label" "$demo" "$res" "$round" "${fps:-null}" "$([ -n "$fps" ] && echo false || echo true)" \
         "$status" "$(json_string "$failure")" "${startup:-null}" \
         "$([ -n "$fps" ] && json_string "frames/$name.txt" || echo null)" \
         "$([ -n "$fps" ] && cat "$rec" || echo null)" >> "$results"
 }
 
 run_peer() {  # round demo WxH
-    local round=$1 demo res=$3 line fps status=0
+    local round=$1 demo res=$3 line fps status=0 tail_json=null
     demo=$(demo_name "$2")
-    line=$("$peer_script" "$2" "$res" 1 2>"$out/logs/quakespasm_${demo}_${res}_r$round.log" | tail -1) ||
-        status=$?
+    local log=$out/logs/quakespasm_${demo}_${res}_r$round.log
+    if [ $peer_tail = 1 ]; then
+        # quakespasm_tail.sh passes the timedemo tool's own line ("quakespasm DEMO WxH FPS") to
+        # stderr and prints its frame-time figures on stdout.
+        line=$(QUAKESPASM_TIMEDEMO=$peer_script "$root/demos/quakespasm_tail.sh" "$2" "$res" \
+            2>"$log" | tail -1) || status=$?
+        tail_json=$(echo "$line" | awk '$1 == "quakespasm-tail" {
+            printf "{\"median_ms\":%s,\"p95_ms\":%s,\"p99_ms\":%s,\"low1_fps\":%s,\"avg_fps\":%s}",
+                $7, $9, $11, $15, $18 }')
+        tail_json=${tail_json:-null}
+        line=$(grep -E '^quakespasm ' "$log" | tail -1) || true
+    else
+        line=$("$peer_script" "$2" "$res" 1 2>"$log" | tail -1) || status=$?
+    fi
     fps=$(echo "$line" | awk '{print $4}')
     case $fps in ''|FAIL|*[!0-9.]*) fps="" ;; esac
     echo "quakespasm $demo $res ${fps:-FAILED}"
-    printf '{"engine":"quakespasm","plugin":"","demo":"%s","res":"%s","round":%s,"fps":%s,"failed":%s,"exit_status":%s,"failure":%s,"startup_s":null,"frames_file":null,"record":null}\n' \
+    printf '{"engine":"quakespasm","plugin":"","demo":"%s","res":"%s","round":%s,"fps":%s,"failed":%s,"exit_status":%s,"failure":%s,"startup_s":null,"frames_file":null,"record":null,"tail":%s}\n' \
         "$demo" "$res" "$round" "${fps:-null}" "$([ -n "$fps" ] && echo false || echo true)" \
         "$status" "$([ -n "$fps" ] && echo null || json_string "no timedemo line (see logs/)")" \
-        >> "$results"
+        "$tail_json" >> "$results"
 }
 
 count() { set -- $1; echo $#; }
-per_round=$(( $(count "$resolutions") * $(count "$demos") * ($(count "$plugins") + peer) ))
+builds=1
+[ -n "$base" ] && builds=2
+per_round=$(( $(count "$resolutions") * $(count "$demos") * ($(count "$plugins") * builds + peer) ))
 total=$(( rounds * per_round ))
 done_runs=0
 started=$SECONDS
@@ -126,7 +151,12 @@ progress() {  # what ran last
 for r in $(seq 1 "$rounds"); do
     for res in $resolutions; do
         for demo in $demos; do
-            for p in $plugins; do progress "$(run_ours "$r" "$p" "$demo" "$res")"; done
+            for p in $plugins; do
+                if [ -n "$base" ]; then
+                    progress "$(run_ours "$r" "$p" "$demo" "$res" "$base/bin/nprquake" "$p@base")"
+                fi
+                progress "$(run_ours "$r" "$p" "$demo" "$res")"
+            done
             if [ $peer = 1 ]; then progress "$(run_peer "$r" "$demo" "$res")"; fi
         done
     done

@@ -414,8 +414,9 @@ void Engine::render(double frame_time) {
     }
     if (timed) gpu_timers_.end_frame();
     trace_.lap(TraceStage::Overlay);
+    throttle_.before_swap();
     window_->swap();
-    throttle_.frame_submitted();
+    throttle_.after_swap();
     trace_.lap(TraceStage::Swap);
 }
 

@@ -18,9 +18,10 @@
 
 namespace nq::npr::classic {
 
-// Four: the frame being drawn plus the three a driver may still be working on (the engine lets
-// two be in flight after a swap, as a triple-buffered swap chain; with three, frames lit by a
-// dynamic light, which changes every frame, still waited).
+// Four: the frame being drawn plus the three a driver may still be working on with a
+// triple-buffered swap chain (with three, frames lit by a dynamic light, which changes every
+// frame, still waited). This engine swaps a frame only once the one before it is finished, so
+// two would do for it; the ABI does not promise that of every engine.
 inline constexpr int kLightmapRing = 4;
 
 class LightmapAtlas {

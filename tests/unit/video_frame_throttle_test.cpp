@@ -1,8 +1,8 @@
 // FrameThrottle on a real (software) GL context: llvmpipe on an offscreen pbuffer queues frames
-// without limit, and after frame_submitted() no frame older than the last two is unfinished.
-// The test fences each frame itself, just before the throttle does: a fence completes only
-// after every command before it, so the throttle having waited for its own fence of a frame
-// means the test's fence of that frame is signalled too.
+// without limit, and with the throttle a frame is handed over only once the one before it is
+// finished. The test fences each frame itself, just before the throttle does: a fence
+// completes only after every command before it, so the throttle having waited for its own
+// fence of a frame means the test's fence of that frame is signalled too.
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
@@ -59,15 +59,21 @@ class VideoFrameThrottle : public ::testing::Test {
         program.reset();
     }
 
-    // Draws and swaps one frame, then fences it (the test's own fence).
-    void submit_frame() {
+    void draw_frame() {
         glViewport(0, 0, kWidth, kHeight);
         glBindVertexArray(vao.id());
         glUseProgram(program.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    // Swaps, then fences the frame (the test's own fence).
+    void swap_frame() {
         window->swap();
         fences.push_back(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0));
         glFlush();
+    }
+    void submit_frame() {
+        draw_frame();
+        swap_frame();
     }
 
     std::optional<VideoWindow> window;
@@ -87,16 +93,31 @@ TEST_F(VideoFrameThrottle, WithoutItTheDriverQueuesFrames) {
     EXPECT_GT(unfinished_two_back, 0);
 }
 
-TEST_F(VideoFrameThrottle, AtMostTwoFramesAreUnfinishedAfterEachSubmission) {
+TEST_F(VideoFrameThrottle, AFrameIsSwappedOnlyOnceTheOneBeforeItIsFinished) {
     FrameThrottle throttle;
-    static_assert(FrameThrottle::kMaxFramesInFlight == 2);
     for (int n = 0; n < kFrames; ++n) {
-        submit_frame();
-        throttle.frame_submitted();
-        if (n >= 2) {
-            EXPECT_TRUE(signalled(fences[n - 2])) << "frame " << n - 2 << " after " << n;
+        draw_frame();
+        throttle.before_swap();
+        if (n >= 1) {
+            EXPECT_TRUE(signalled(fences[n - 1])) << "frame " << n - 1 << " before swapping " << n;
         }
+        swap_frame();
+        throttle.after_swap();
     }
+    throttle.release();
+}
+
+// A caller that skips before_swap() (nothing to wait for yet, or a frame drawn outside the
+// loop) leaks no fence and the next wait is for the newest frame.
+TEST_F(VideoFrameThrottle, SwapsWithoutAWaitKeepOnlyTheNewestFence) {
+    FrameThrottle throttle;
+    for (int n = 0; n < 3; ++n) {
+        submit_frame();
+        throttle.after_swap();
+    }
+    draw_frame();
+    throttle.before_swap();
+    EXPECT_TRUE(signalled(fences[2]));
     throttle.release();
 }
 
@@ -104,7 +125,7 @@ TEST_F(VideoFrameThrottle, AtMostTwoFramesAreUnfinishedAfterEachSubmission) {
 TEST_F(VideoFrameThrottle, OutlivingTheContextIsHarmless) {
     FrameThrottle throttle;
     submit_frame();
-    throttle.frame_submitted();
+    throttle.after_swap();
     for (GLsync fence : fences) glDeleteSync(fence);
     fences.clear();
     vao.reset();
