@@ -10,13 +10,13 @@
 // the swap instead (for N-2, with N-1 and N queued) had a software rasteriser's threads start
 // on the next queued frame the moment the awaited one finished; holding every core, they kept
 // the engine's woken thread off the CPU for a scheduler slice (~1-4 ms), so a slow frame was
-// followed by an almost free one: play_lq1m1's 99th-percentile frame was ~0.2x the median
-// longer for it, at the same average (docs/benchmarks.md, "frame pacing"). With nothing
+// followed by an almost free one: play_lq1m1's 99th-percentile frame was ~0.2-0.3x the median
+// longer for it (docs/benchmarks.md, "Removed: frames bunched by the wait for the rasteriser"). With nothing
 // queued behind the awaited frame, the rasteriser goes idle and the engine resumes at once.
 // On a GPU the driver has been consuming frame N's commands as they came, so the wait costs
 // no GPU time.
 //
-// No allocation; two fences alive at most, three GL calls per frame.
+// No allocation; one fence held between frames, four GL calls per frame.
 #pragma once
 
 #include <epoxy/gl.h>
