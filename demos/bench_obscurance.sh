@@ -2,9 +2,11 @@
 # Volumetric obscurance: what each vo_mode costs and how far it is from the converged reference.
 #
 #   cost   timedemo of demo.dem under `classic`, obscurance off and every mode (lines5, lines9,
-#          points12, points33, area1, lines5 at half resolution), runs interleaved (off, lines5,
-#          ..., then the next resolution), one run each: fps, and the obscurance pass's GPU time
-#          from the engine's timer queries (timedemo's "gpu obscurance" line).
+#          points12, points33, area1, lines5 at half resolution, lines5 drawn over full-screen
+#          triangles instead of compute shaders), runs interleaved (off, lines5,
+#          ..., then the next resolution, then the next round): fps, and the obscurance pass's
+#          GPU time per stage from the engine's timer queries (timedemo's "gpu obscurance" and
+#          "gpu vo_*" lines: moments, estimate, blur, composite).
 #   error  the same paused demo.dem frames with `vo_show 1` in every mode (the sampled ones also
 #          with Poisson-disk and Lloyd sets, vo_sample_set; and electrostatic sets of the
 #          neighbouring counts, vo_sample_count) and in `reference` (64 x 64
@@ -13,12 +15,14 @@
 #          vo_reference (Embree); demos/obscurance_error.py computes RMSE and SSIM against both
 #          references, and flicker.
 #
-# usage: demos/bench_obscurance.sh [--res "640x480 1024x768"] [--skip-cost] [--skip-error]
-#                                  [--out DIR]      (default build/bench_obscurance)
-# Output in DIR: cost.tsv (resolution, config, fps, obscurance ms/frame), error.md (the error
+# usage: demos/bench_obscurance.sh [--res "640x480 1024x768"] [--rounds N] [--skip-cost]
+#                                  [--skip-error] [--out DIR]  (default build/bench_obscurance)
+# Output in DIR: cost.tsv (round, resolution, config, fps, the pass's GPU ms/frame in all and
+# per stage), cost.md (medians over the rounds, ratios to off and to points12), error.md (the error
 # table), error_frame_N.jpg (lines5, points12, area1, reference, raytraced side by side), shots/,
 # scenes/, logs/.
-# env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
+# env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release), PYTHON (default
+#        /usr/bin/python3)
 # Every run starts from its own empty user dir with every vo_* cvar on the command line, so
 # an archived config cannot leak in.
 set -euo pipefail
@@ -26,13 +30,16 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 data=${NPRQ_DATA:-$root/../shared/data}
 build=${BUILD:-$root/build/release}
 engine=$build/bin/nprquake
+python=${PYTHON:-/usr/bin/python3}  # with numpy and PIL, for the error table
 resolutions="640x480 1024x768"
 out=$root/build/bench_obscurance
 cost=1
 error=1
+rounds=1
 while [ $# -gt 0 ]; do
     case $1 in
         --res) resolutions=$2; shift 2 ;;
+        --rounds) rounds=$2; shift 2 ;;
         --skip-cost) cost=0; shift ;;
         --skip-error) error=0; shift ;;
         --out) out=$2; shift 2 ;;
@@ -43,7 +50,7 @@ done
 [ -d "$data/lq1" ] || { echo "bench_obscurance.sh: no game data at $data/lq1" >&2; exit 1; }
 mkdir -p "$out/logs" "$out/shots" "$out/scenes"
 defaults="+vo_radius 24 +vo_radius2 0 +vo_dual_min 0 +vo_thickness 32 +vo_strength 1 \
-+vo_normal 1 +vo_show 0"
++vo_normal 1 +vo_show 0 +vo_compute 1"
 
 run_engine() {  # width height log args...
     local width=$1 height=$2 log=$3 user
@@ -63,29 +70,46 @@ configs=(
     "points33|+vo_enable 1 +vo_mode points33 +vo_blur 1 +vo_half 0"
     "area1|+vo_enable 1 +vo_mode area1 +vo_blur 1 +vo_half 0"
     "lines5_half|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 1"
+    "lines5_fragment|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 0 +vo_compute 0"
 )
 
 if [ "$cost" = 1 ]; then
-    : > "$out/cost.tsv"
-    for res in $resolutions; do
-        for entry in "${configs[@]}"; do
-            name=${entry%%|*}
-            log=$out/logs/cost_${name}_$res.log
-            # shellcheck disable=SC2086
-            run_engine "${res%x*}" "${res#*x}" "$log" ${entry#*|} +r_plugin classic \
-                +timedemo demo +quit
-            fps=$(awk '/frames .* seconds .* fps/ {print $5}' "$log" | tail -1)
-            gpu=$(awk '/gpu obscurance/ {print $3}' "$log" | tail -1)
-            # A pass that did not build leaves the frame rate of a run without it: no number.
-            if grep -q "obscurance off" "$log" || { [ "$name" != off ] && [ -z "$gpu" ]; }; then
-                fps=""
-                gpu=""
-            fi
-            [ "$name" = off ] && gpu=${gpu:-0}
-            printf '%s\t%s\t%s\t%s\n' "$res" "$name" "${fps:-failed}" "${gpu:-failed}" |
-                tee -a "$out/cost.tsv"
+    # Rounds interleave everything (round 1: every config at every resolution, then round 2),
+    # so a machine's drift reaches every config alike.
+    printf 'round\tresolution\tconfig\tfps\tobscurance_ms\tmoments_ms\testimate_ms\tblur_ms\tcomposite_ms\n' \
+        > "$out/cost.tsv"
+    for round in $(seq "$rounds"); do
+        for res in $resolutions; do
+            for entry in "${configs[@]}"; do
+                name=${entry%%|*}
+                log=$out/logs/cost_${name}_${res}_$round.log
+                # shellcheck disable=SC2086
+                run_engine "${res%x*}" "${res#*x}" "$log" ${entry#*|} +r_plugin classic \
+                    +timedemo demo +quit
+                grep -m1 "GL_RENDERER" "$log" > "$out/renderer.txt" || true
+                fps=$(awk '/frames .* seconds .* fps/ {print $5}' "$log" | tail -1)
+                # Per stage (exclusive times): the whole pass is their sum.
+                stages=$(awk '/^ *gpu (obscurance|vo_)/ {t[$2] = $3}
+                    END {
+                        total = t["obscurance"] + t["vo_moments"] + t["vo_estimate"] + \
+                                t["vo_blur"] + t["vo_composite"]
+                        if ("vo_estimate" in t)
+                            printf "%.4f\t%.4f\t%.4f\t%.4f\t%.4f", total, t["vo_moments"],
+                                   t["vo_estimate"], t["vo_blur"],
+                                   t["vo_composite"] + t["obscurance"]
+                    }' "$log")
+                # A pass that did not build leaves the frame rate of a run without it: no number.
+                if grep -q "obscurance off" "$log" || { [ "$name" != off ] && [ -z "$stages" ]; }; then
+                    fps=""
+                    stages="failed"
+                fi
+                [ "$name" = off ] && stages=$(printf '0\t0\t0\t0\t0')
+                printf '%s\t%s\t%s\t%s\t%s\n' "$round" "$res" "$name" "${fps:-failed}" "$stages" |
+                    tee -a "$out/cost.tsv"
+            done
         done
     done
+    "$python" "$root/demos/obscurance_cost.py" "$out/cost.tsv" | tee "$out/cost.md"
 fi
 
 if [ "$error" = 1 ]; then
@@ -136,7 +160,7 @@ if [ "$error" = 1 ]; then
             >> "$out/logs/vo_reference.log" 2>&1
     done
     names=$(for entry in "${shots[@]}"; do echo "${entry%%|*}"; done)
-    /usr/bin/python3 "$root/demos/obscurance_error.py" --shots "$out/shots" \
+    "$python" "$root/demos/obscurance_error.py" --shots "$out/shots" \
         --configs "$(echo $names)" --stills "$stills" --stretch "$(echo $stretch)" \
         --sheets "$out" | tee "$out/error.md"
 fi

@@ -55,6 +55,9 @@ void ObscuranceCvars::register_cvars(CvarRegistry& cvars,
         number("vo_sample_count", "0", 0.0f, float(npr::obscurance::kMaxPointSamples),
                "lines or points instead of the mode's count (0 = the mode's; 4, 6, 8, 10 lines "
                "and 11, 13, 32, 34 points have electrostatic sets)");
+    cvars_[compute] = flag("vo_compute", d.compute,
+                           "estimate and blur as compute shaders (GL 4.3), else full-screen "
+                           "triangles");
     read();
 }
 
@@ -94,6 +97,7 @@ void ObscuranceCvars::read() {
     s.blur = cvars_[blur]->value() != 0.0f;
     s.half_resolution = cvars_[half]->value() != 0.0f;
     s.show = cvars_[show]->value() != 0.0f;
+    s.compute = cvars_[compute]->value() != 0.0f;
     if (!npr::obscurance::parse_sample_method(cvars_[sample_set]->string(), s.sample_method)) {
         s.sample_method = npr::obscurance::SampleMethod::electrostatic;
         if (warn_) {

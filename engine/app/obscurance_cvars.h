@@ -35,6 +35,7 @@ class ObscuranceCvars {
         show,
         sample_set,
         sample_count,
+        compute,
         count
     };
     void read();

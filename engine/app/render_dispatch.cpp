@@ -41,7 +41,17 @@ constexpr Pass kPasses[] = {
 }  // namespace
 
 RenderDispatch::RenderDispatch(PluginHost& plugins, GpuPassTimers* timers)
-    : plugins_(plugins), timers_(timers) {}
+    : plugins_(plugins), timers_(timers) {
+    if (!timers_) return;
+    // Each obscurance stage timed on its own, inside the "obscurance" pass.
+    npr::obscurance::PassMarkers markers;
+    markers.begin = [](void* context, const char* stage) {
+        static_cast<GpuPassTimers*>(context)->begin(stage);
+    };
+    markers.end = [](void* context) { static_cast<GpuPassTimers*>(context)->end(); };
+    markers.context = timers_;
+    obscurance_.set_markers(markers);
+}
 
 RenderDispatch::~RenderDispatch() {
     unload();

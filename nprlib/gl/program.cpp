@@ -1,6 +1,9 @@
 #include "gl/program.h"
 
+#include <array>
 #include <cstring>
+#include <iterator>
+#include <utility>
 
 namespace nq::npr::gl {
 namespace {
@@ -20,6 +23,8 @@ const char* stage_name(GLenum stage) {
             return "geometry";
         case GL_FRAGMENT_SHADER:
             return "fragment";
+        case GL_COMPUTE_SHADER:
+            return "compute";
         default:
             return "?";
     }
@@ -66,23 +71,28 @@ std::string program_info_log(GLuint program) {
 ProgramBuild Program::build(const ProgramSource& source, ObjectTracker* tracker) {
     ProgramBuild result;
     const char* name = source.name ? source.name : "program";
-    Shader vertex = compile_stage(GL_VERTEX_SHADER, source.vertex, name, tracker, result.error);
-    if (!vertex) return result;
-    Shader fragment;
-    if (source.fragment) {
-        fragment = compile_stage(GL_FRAGMENT_SHADER, source.fragment, name, tracker, result.error);
-        if (!fragment) return result;
+    // A compute program has that one stage; any other has a vertex stage and the optional ones.
+    const std::pair<GLenum, const char*> stages[] = {
+        {GL_VERTEX_SHADER, source.compute ? nullptr : source.vertex},
+        {GL_FRAGMENT_SHADER, source.compute ? nullptr : source.fragment},
+        {GL_GEOMETRY_SHADER, source.compute ? nullptr : source.geometry},
+        {GL_COMPUTE_SHADER, source.compute},
+    };
+    if (!source.compute && !source.vertex) {
+        result.error = std::string(name) + ": no vertex or compute stage";
+        return result;
     }
-    Shader geometry;
-    if (source.geometry) {
-        geometry = compile_stage(GL_GEOMETRY_SHADER, source.geometry, name, tracker, result.error);
-        if (!geometry) return result;
+    std::array<Shader, std::size(stages)> shaders;
+    for (size_t i = 0; i < std::size(stages); ++i) {
+        if (!stages[i].second) continue;
+        shaders[i] = compile_stage(stages[i].first, stages[i].second, name, tracker, result.error);
+        if (!shaders[i]) return result;
     }
 
     ProgramName program = ProgramName::create(tracker);
-    glAttachShader(program.id(), vertex.id());
-    if (fragment) glAttachShader(program.id(), fragment.id());
-    if (geometry) glAttachShader(program.id(), geometry.id());
+    for (const Shader& shader : shaders) {
+        if (shader) glAttachShader(program.id(), shader.id());
+    }
     if (source.feedback_count > 0) {
         glTransformFeedbackVaryings(program.id(), source.feedback_count, source.feedback_varyings,
                                     GL_INTERLEAVED_ATTRIBS);
@@ -91,9 +101,9 @@ ProgramBuild Program::build(const ProgramSource& source, ObjectTracker* tracker)
     GLint linked = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
     // The shaders are flagged for deletion with the program once detached.
-    glDetachShader(program.id(), vertex.id());
-    if (fragment) glDetachShader(program.id(), fragment.id());
-    if (geometry) glDetachShader(program.id(), geometry.id());
+    for (const Shader& shader : shaders) {
+        if (shader) glDetachShader(program.id(), shader.id());
+    }
     if (linked != GL_TRUE) {
         result.error =
             std::string(name) + ": program failed to link:\n" + program_info_log(program.id());

@@ -21,6 +21,8 @@ struct ProgramSource {
     // Vertex outputs captured by transform feedback, interleaved in this order.
     const char* const* feedback_varyings = nullptr;
     int feedback_count = 0;
+    // A compute program (GL 4.3): this one stage, the others ignored.
+    const char* compute = nullptr;
 };
 
 struct ProgramBuild;

@@ -44,8 +44,8 @@ vec2 project(vec3 view) {
 }
 )";
 
-const char* const kEstimateFragment = R"(
-in vec2 v_uv;
+const char* const kEstimate = R"(
+uniform ivec2 u_target_size;  // the estimate's resolution (the scene's, or half of it)
 uniform vec2 u_radii;       // R and the second radius (0 = none)
 uniform int u_dual_minimum;
 uniform float u_thickness;  // 0 = infinitely thick
@@ -61,10 +61,6 @@ uniform vec4 u_samples[VO_COUNT];  // x, y, z in the unit ball, weight
 uniform sampler2D u_moments;  // (distance, distance^2) of the depth buffer, mipmapped
 uniform vec2 u_moments_scale;  // scene size / the moments texture's (padded) size
 #endif
-// The result with what the blur needs of the texel, so that it reads one texture per tap:
-// (open, distance, view-space normal x and y); distance 0 where nothing receives obscurance.
-layout(location = 0) out vec4 o_open;
-
 // The open part [lo, min(t_scene, limit)] of a line, plus what lies behind a shell T deep.
 float open_length(float t_scene, float lo, float limit) {
     float open_len = clamp(t_scene, lo, limit) - lo;
@@ -239,12 +235,12 @@ float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflectio
 // of 8 and the centre) turned in steps of 22.5 degrees take only 2 distinct positions.
 uniform float u_rotation_span;
 const int kBayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
-void pixel_pattern(out mat2 rotation, out float reflection) {
+void pixel_pattern(ivec2 pixel, out mat2 rotation, out float reflection) {
 #ifdef VO_REFERENCE
     rotation = mat2(1.0);  // the reference is not randomised
     reflection = 1.0;
 #else
-    ivec2 q = ivec2(gl_FragCoord.xy) & 3;
+    ivec2 q = pixel & 3;
     int bayer = kBayer[q.y * 4 + q.x];
     float angle = (float(bayer) + 0.5) * (u_rotation_span / 16.0);
     float c = cos(angle), s = sin(angle);
@@ -253,29 +249,30 @@ void pixel_pattern(out mat2 rotation, out float reflection) {
 #endif
 }
 
-void main() {
-    ivec2 texel = scene_texel(v_uv);
+// The result with what the blur needs of the texel, so that it reads one texture per tap:
+// (open, distance, view-space normal x and y); distance 0 where nothing receives obscurance.
+vec4 pass_result(ivec2 pixel) {
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(u_target_size);
+    ivec2 texel = scene_texel(uv);
     vec4 normal = scene_normal(texel);
-    if (!receives(normal)) {
-        o_open = vec4(1.0, 0.0, 0.0, 0.0);
-        return;
-    }
+    if (!receives(normal)) return vec4(1.0, 0.0, 0.0, 0.0);
     float distance = scene_distance(texel);
     vec3 n = normalize(normal.xyz);
-    o_open = vec4(1.0, distance, n.xy);
+    vec4 result = vec4(1.0, distance, n.xy);
     // A sphere smaller than a pixel has nothing the depth buffer can resolve.
     float radius_pixels = u_radii.x * u_projection.x / distance * 0.5 * float(u_scene_size.x);
-    if (radius_pixels < 1.0) return;
-    vec3 p = view_position(v_uv, distance);
+    if (radius_pixels < 1.0) return result;
+    vec3 p = view_position(uv, distance);
     mat2 rotation;
     float reflection;
-    pixel_pattern(rotation, reflection);
+    pixel_pattern(pixel, rotation, reflection);
     float open = open_fraction(p, n, u_radii.x, rotation, reflection);
     if (u_radii.y > 0.0) {
         float second = open_fraction(p, n, u_radii.y, rotation, reflection);
         open = u_dual_minimum != 0 ? min(open, second) : open * second;
     }
-    o_open.x = open;
+    result.x = open;
+    return result;
 }
 )";
 
@@ -290,19 +287,16 @@ void main() {
 }
 )";
 
-const char* const kBlurFragment = R"(
-in vec2 v_uv;
+const char* const kBlur = R"(
 uniform sampler2D u_open;  // (open, distance, normal x, normal y), as the estimate wrote it
 uniform ivec2 u_step;      // (1, 0) or (0, 1)
-layout(location = 0) out vec4 o_open;
 const float kGauss[5] = float[5](0.2270270, 0.1945946, 0.1216216, 0.0540541, 0.0162162);
 vec3 unpack_normal(vec2 xy) { return vec3(xy, sqrt(max(1.0 - dot(xy, xy), 0.0))); }
-void main() {
+vec4 pass_result(ivec2 pixel) {
     ivec2 size = textureSize(u_open, 0);
-    ivec2 centre = clamp(ivec2(v_uv * vec2(size)), ivec2(0), size - 1);
+    ivec2 centre = clamp(pixel, ivec2(0), size - 1);
     vec4 c = texelFetch(u_open, centre, 0);
-    o_open = c;
-    if (c.y <= 0.0) return;  // nothing here receives obscurance
+    if (c.y <= 0.0) return c;  // nothing here receives obscurance
     vec3 n0 = unpack_normal(c.zw);
     float sum = 0.0, weights = 0.0;
     for (int k = -4; k <= 4; ++k) {
@@ -313,7 +307,26 @@ void main() {
         sum += w * q.x;
         weights += w;
     }
-    if (weights > 1e-5) o_open.x = sum / weights;
+    if (weights > 1e-5) c.x = sum / weights;
+    return c;
+}
+)";
+
+const char* const kFragmentHeader = "#version 330 core\n";
+const char* const kComputeHeader = "#version 430 core\n";
+
+const char* const kFragmentMain = R"(
+layout(location = 0) out vec4 o_result;
+void main() { o_result = pass_result(ivec2(gl_FragCoord.xy)); }
+)";
+
+const char* const kComputeMain = R"(
+layout(local_size_x = VO_GROUP, local_size_y = VO_GROUP) in;
+layout(rgba16f, binding = 0) writeonly uniform image2D u_target;
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, imageSize(u_target)))) return;
+    imageStore(u_target, pixel, pass_result(pixel));
 }
 )";
 

@@ -1,8 +1,11 @@
-// GLSL of the volumetric obscurance pass (obscurance_pass.h). Every stage draws one full-screen
-// triangle (kFullscreenVertex) and reads the scene's depth and view-space normals with nearest
-// fetches, so no sample blends depths across an edge.
+// GLSL of the volumetric obscurance pass (obscurance_pass.h). The stages read the scene's depth
+// and view-space normals with nearest fetches, so no sample blends depths across an edge.
+// The estimate and the blur are each a function pass_result(pixel) -> RGBA16F texel, run by
+// kComputeMain (an 8 x 8 compute group per tile, GL 4.3: on every shader core, where some GPUs
+// run fragment shaders on a few) or by kFragmentMain over a full-screen triangle (GL 3.3);
+// the other stages draw one full-screen triangle (kFullscreenVertex).
 //
-// kEstimateFragment, compiled with "#define VO_LINES n", "VO_POINTS n", "VO_AREA" or
+// kEstimate, compiled with "#define VO_LINES n", "VO_POINTS n", "VO_AREA" or
 // "VO_REFERENCE k": the fraction
 // of the sphere of radius R around each pixel's view-space point that is open (not inside the
 // scene), 1 = unoccluded. Lines (the paper's 4.1): each sample (x, y, w) on the unit disk is a
@@ -22,7 +25,7 @@
 //
 // kMomentsFragment: (distance, distance^2) per scene texel, level 0 of the moments' mip chain.
 //
-// kBlurFragment: one direction of a separable 9-tap Gaussian, each tap weighted down by its
+// kBlur: one direction of a separable 9-tap Gaussian, each tap weighted down by its
 // depth difference relative to the centre's distance and by the angle between the normals. It
 // reads only the estimate's output, (open, distance, normal x, normal y): one fetch per tap.
 //
@@ -32,11 +35,17 @@
 
 namespace nq::npr::obscurance {
 
+inline constexpr int kComputeGroupSize = 8;  // kComputeMain's local size each way (VO_GROUP)
+
 extern const char* const kFullscreenVertex;
 extern const char* const kSceneLibrary;  // depth to distance, projection, normals
-extern const char* const kEstimateFragment;
+extern const char* const kEstimate;      // pass_result(pixel)
 extern const char* const kMomentsFragment;
-extern const char* const kBlurFragment;
+extern const char* const kBlur;  // pass_result(pixel)
 extern const char* const kCompositeFragment;
+extern const char* const kFragmentHeader;  // #version 330 core
+extern const char* const kComputeHeader;   // #version 430 core
+extern const char* const kFragmentMain;    // pass_result at gl_FragCoord into output 0
+extern const char* const kComputeMain;     // pass_result into image unit 0 (u_target)
 
 }  // namespace nq::npr::obscurance

@@ -14,7 +14,6 @@
 namespace nq::npr::obscurance {
 namespace {
 
-constexpr char kHeader[] = "#version 330 core\n";
 constexpr int kUnitDepth = 0;
 constexpr int kUnitNormal = 1;
 constexpr int kUnitOpen = 2;
@@ -106,14 +105,40 @@ bool ObscurancePass::build_fullscreen(gl::Program& program, const char* name,
     return true;
 }
 
-bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::string& error) {
+// The estimate or the blur, whose source defines pass_result(pixel): a compute program, or a
+// full-screen one without compute.
+bool ObscurancePass::build_stage(gl::Program& program, const char* name, const std::string& body,
+                                 std::string& error) {
+    if (!compute_) {
+        return build_fullscreen(program, name, kFragmentHeader + body + kFragmentMain, error);
+    }
+    const std::string source = kComputeHeader +
+                               ("#define VO_GROUP " + std::to_string(kComputeGroupSize) + "\n") +
+                               body + kComputeMain;
+    gl::ProgramSource stage{name, nullptr, nullptr};
+    stage.compute = source.c_str();
+    gl::ProgramBuild build = gl::Program::build(stage, tracker_);
+    if (!build.ok()) {
+        error = build.error;
+        return false;
+    }
+    program = std::move(build.program);
+    return true;
+}
+
+bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, bool compute,
+                                    std::string& error) {
+    if (compute != compute_) {  // vo_compute changed: the estimates and the blur again
+        for (gl::Program& program : estimate_) program.reset();
+        blur_.reset();
+        compute_ = compute;
+    }
     gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
     SampleTableKey& uploaded = uploaded_[static_cast<size_t>(mode)];
     if (estimate && uploaded.count != samples) estimate.reset();  // another vo_sample_count
     if (!estimate) {
-        const std::string fragment = std::string(kHeader) + estimate_defines(mode, samples) +
-                                     kSceneLibrary + kEstimateFragment;
-        if (!build_fullscreen(estimate, "obscurance estimate", fragment, error)) return false;
+        const std::string body = estimate_defines(mode, samples) + kSceneLibrary + kEstimate;
+        if (!build_stage(estimate, "obscurance estimate", body, error)) return false;
         gl::bind_sampler_units(estimate, {"u_depth", "u_normal"});
         estimate.use();
         if (mode == ObscuranceMode::area1)
@@ -122,14 +147,14 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::strin
     }
     if (mode == ObscuranceMode::area1 && !moments_program_) {
         if (!build_fullscreen(moments_program_, "obscurance moments",
-                              std::string(kHeader) + kSceneLibrary + kMomentsFragment, error)) {
+                              std::string(kFragmentHeader) + kSceneLibrary + kMomentsFragment,
+                              error)) {
             return false;
         }
         gl::bind_sampler_units(moments_program_, {"u_depth", "u_normal"});
     }
     if (!blur_) {
-        if (!build_fullscreen(blur_, "obscurance blur", std::string(kHeader) + kBlurFragment,
-                              error)) {
+        if (!build_stage(blur_, "obscurance blur", kBlur, error)) {
             return false;
         }
         blur_.use();
@@ -137,7 +162,8 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::strin
     }
     if (!composite_) {
         if (!build_fullscreen(composite_, "obscurance composite",
-                              std::string(kHeader) + kSceneLibrary + kCompositeFragment, error)) {
+                              std::string(kFragmentHeader) + kSceneLibrary + kCompositeFragment,
+                              error)) {
             return false;
         }
         gl::bind_sampler_units(composite_, {"u_depth", "u_normal", "u_open"});
@@ -289,10 +315,23 @@ void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettin
     glUniform1f(program.location("u_thickness"), settings.thickness);
     glUniform1i(program.location("u_normal_clamp"), settings.normal_clamp ? 1 : 0);
     if (settings.mode == ObscuranceMode::area1) set_moments_scale(program, scene);
-    glBindFramebuffer(GL_FRAMEBUFFER, targets_[0].framebuffer.id());
-    glViewport(0, 0, target_width_, target_height_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    result_ = &targets_[0].texture;
+    glUniform2i(program.location("u_target_size"), target_width_, target_height_);
+    run_stage(targets_[0]);
+}
+
+// The bound estimate or blur program over the whole target, into `to`.
+void ObscurancePass::run_stage(const Target& to) {
+    if (compute_) {
+        glBindImageTexture(0, to.texture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glDispatchCompute(GLuint((target_width_ + kComputeGroupSize - 1) / kComputeGroupSize),
+                          GLuint((target_height_ + kComputeGroupSize - 1) / kComputeGroupSize), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the next stage samples it
+    } else {
+        glBindFramebuffer(GL_FRAMEBUFFER, to.framebuffer.id());
+        glViewport(0, 0, target_width_, target_height_);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    result_ = &to.texture;
 }
 
 void ObscurancePass::blur() {
@@ -303,9 +342,7 @@ void ObscurancePass::blur() {
         const Target& to = targets_[size_t(1 - pass)];
         glUniform2i(step, pass == 0 ? 1 : 0, pass == 0 ? 0 : 1);
         bind_texture(kUnitOpen, from.texture.id());
-        glBindFramebuffer(GL_FRAMEBUFFER, to.framebuffer.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        result_ = &to.texture;
+        run_stage(to);
     }
 }
 
@@ -333,7 +370,9 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
                            std::string& error) {
     if (scene.width <= 0 || scene.height <= 0) return true;
     const int samples = effective_sample_count(settings);
-    if (!build_programs(settings.mode, samples, error)) return false;
+    if (gl_version_ == 0) gl_version_ = epoxy_gl_version();
+    const bool compute = settings.compute && gl_version_ >= 43;
+    if (!build_programs(settings.mode, samples, compute, error)) return false;
     const int width = settings.half_resolution ? (scene.width + 1) / 2 : scene.width;
     const int height = settings.half_resolution ? (scene.height + 1) / 2 : scene.height;
     SavedState saved;
@@ -347,10 +386,23 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(empty_vertex_array_.id());
-    if (settings.mode == ObscuranceMode::area1) build_moments(scene);
+    if (settings.mode == ObscuranceMode::area1) {
+        mark_begin("vo_moments");
+        build_moments(scene);
+        mark_end();
+    }
+    mark_begin("vo_estimate");
     estimate(scene, settings, samples);
-    if (settings.blur && settings.mode != ObscuranceMode::reference) blur();
+    mark_end();
+    if (settings.blur && settings.mode != ObscuranceMode::reference) {
+        mark_begin("vo_blur");
+        blur();
+        mark_end();
+    }
+    mark_begin("vo_composite");
     composite(scene, settings);
+    mark_end();
+    if (compute_) glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindVertexArray(0);
     glActiveTexture(GL_TEXTURE0);
     return true;

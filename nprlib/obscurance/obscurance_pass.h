@@ -26,14 +26,28 @@ struct SceneTextures {
     float projection[16] = {};  // column-major, view to clip
 };
 
+// Optional GPU-time markers around each stage ("vo_moments", "vo_estimate", "vo_blur",
+// "vo_composite"), e.g. the engine's timer queries; either function may be null.
+struct PassMarkers {
+    void (*begin)(void* context, const char* stage) = nullptr;
+    void (*end)(void* context) = nullptr;
+    void* context = nullptr;
+};
+
 class ObscurancePass {
   public:
     explicit ObscurancePass(gl::ObjectTracker* tracker = nullptr) : tracker_(tracker) {}
+
+    void set_markers(const PassMarkers& markers) { markers_ = markers; }
 
     // Multiplies the scene's colour by its obscurance. Leaves blending and depth testing off
     // as they were found, the scene framebuffer bound with both of its colour outputs.
     // False with `error` when a program does not build (the scene is left as it was).
     bool apply(const SceneTextures& scene, const ObscuranceSettings& settings, std::string& error);
+
+    // Whether the last apply ran the estimate and the blur as compute programs (vo_compute where
+    // the context has GL 4.3).
+    bool ran_compute() const { return compute_; }
 
     // The last result (RGBA16F: open in red, 1 = open; then the texel's distance and normal
     // x, y for the blur), at the pass's resolution; 0 before the first apply.
@@ -57,7 +71,9 @@ class ObscurancePass {
     };
     bool build_fullscreen(gl::Program& program, const char* name, const std::string& fragment,
                           std::string& error);
-    bool build_programs(ObscuranceMode mode, int samples, std::string& error);
+    bool build_stage(gl::Program& program, const char* name, const std::string& body,
+                     std::string& error);
+    bool build_programs(ObscuranceMode mode, int samples, bool compute, std::string& error);
     void upload_samples(ObscuranceMode mode, SampleTableKey table);
     bool make_target(Target& target, GLenum format, int levels, int width, int height,
                      std::string& error);
@@ -65,11 +81,21 @@ class ObscurancePass {
     bool prepare_moments(int width, int height, std::string& error);
     void build_moments(const SceneTextures& scene);
     void estimate(const SceneTextures& scene, const ObscuranceSettings& settings, int samples);
+    void run_stage(const Target& to);
     void blur();
     void composite(const SceneTextures& scene, const ObscuranceSettings& settings);
     void bind_scene(gl::Program& program, const SceneTextures& scene);
+    void mark_begin(const char* stage) const {
+        if (markers_.begin) markers_.begin(markers_.context, stage);
+    }
+    void mark_end() const {
+        if (markers_.end) markers_.end(markers_.context);
+    }
 
     gl::ObjectTracker* tracker_;
+    PassMarkers markers_;
+    int gl_version_ = 0;    // the context's, e.g. 45; 0 until the first apply
+    bool compute_ = false;  // the estimates and the blur are built as compute programs
     std::array<gl::Program, kObscuranceModes> estimate_;
     std::array<SampleTableKey, kObscuranceModes> uploaded_{};  // per estimate program
     gl::Program blur_, composite_, moments_program_;

@@ -42,6 +42,9 @@ struct ObscuranceSettings {
     bool normal_clamp = true;  // the tangent plane bounds each sample (flat surfaces stay open)
     bool blur = true;          // edge-aware (depth and normal) bilateral blur
     bool half_resolution = false;
+    // vo_compute: the estimate and the blur as compute shaders where the context has them
+    // (GL 4.3), else over full-screen triangles (the same result).
+    bool compute = true;
     bool show = false;  // vo_show: the obscurance alone, in grey
     // vo_sample_set: whose line and point tables the estimate uses (sample_tables.h); the
     // paper's electrostatic sets by default, the others for the error comparison.

@@ -24,7 +24,7 @@ using npr::obscurance::ObscuranceSettings;
 
 const char* const kCvars[] = {"vo_enable",   "vo_mode",      "vo_radius",   "vo_radius2",
                               "vo_dual_min", "vo_thickness", "vo_strength", "vo_normal",
-                              "vo_blur",     "vo_half",      "vo_show"};
+                              "vo_blur",     "vo_half",      "vo_show",     "vo_compute"};
 
 TEST(ObscuranceCvars, DefaultsAreTheSettingsDefaultsAndTheDocumentedOnes) {
     CvarRegistry registry;
@@ -43,6 +43,7 @@ TEST(ObscuranceCvars, DefaultsAreTheSettingsDefaultsAndTheDocumentedOnes) {
     EXPECT_EQ(s.blur, d.blur);
     EXPECT_EQ(s.half_resolution, d.half_resolution);
     EXPECT_EQ(s.show, d.show);
+    EXPECT_EQ(s.compute, d.compute);
     const std::string doc = npr::test::console_doc();
     ASSERT_FALSE(doc.empty());
     for (const char* name : kCvars) {
@@ -64,6 +65,7 @@ TEST(ObscuranceCvars, ValuesReachTheSettingsAndABadModeWarns) {
     registry.set("vo_radius2", "64");
     registry.set("vo_dual_min", "1");
     registry.set("vo_half", "1");
+    registry.set("vo_compute", "0");
     ObscuranceSettings s = cvars.settings();
     EXPECT_TRUE(s.enabled);
     EXPECT_EQ(s.mode, ObscuranceMode::points33);
@@ -71,6 +73,7 @@ TEST(ObscuranceCvars, ValuesReachTheSettingsAndABadModeWarns) {
     EXPECT_EQ(s.radius2, 64.0f);
     EXPECT_EQ(s.dual, npr::obscurance::DualRadius::minimum);
     EXPECT_TRUE(s.half_resolution);
+    EXPECT_FALSE(s.compute);
     EXPECT_TRUE(warnings.empty());
     registry.set("vo_mode", "area7");
     s = cvars.settings();

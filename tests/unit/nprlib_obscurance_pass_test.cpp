@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -478,6 +479,76 @@ TEST_F(ObscurancePassTest, ASceneOfAnotherSizeGetsTargetsOfItsSize) {
         const float error = mean_error(
             run(s), [](glm::vec3, const Hit&) { return 1.0f; }, counted);
         EXPECT_LT(error, 0.04f) << obscurance::obscurance_mode_name(mode);
+    }
+}
+
+// vo_compute: the estimate and the blur as compute programs give the picture the full-screen
+// triangles give, in every mode, at full and half resolution (the context here has GL 4.5).
+TEST_F(ObscurancePassTest, ComputeAndFragmentStagesGiveTheSamePicture) {
+    build_scene({kFloor, kWall});
+    for (ObscuranceMode mode : kModes) {
+        if (mode == ObscuranceMode::reference) continue;  // slow; the same estimate as lines
+        for (bool half : {false, true}) {
+            ObscuranceSettings s = settings_for(mode);
+            s.blur = true;
+            s.half_resolution = half;
+            s.compute = false;
+            const std::vector<float> fragment = run(s);
+            EXPECT_FALSE(pass_.ran_compute());
+            s.compute = true;
+            const std::vector<float> compute = run(s);
+            EXPECT_TRUE(pass_.ran_compute());
+            float worst = 0.0f, darkest = 1.0f;
+            for (size_t i = 0; i < compute.size(); ++i) {
+                worst = std::max(worst, std::abs(compute[i] - fragment[i]));
+                darkest = std::min(darkest, compute[i]);
+            }
+            // One step of the 8-bit colour: the two paths only round differently.
+            EXPECT_LE(worst, 1.5f / 255.0f) << obscurance::obscurance_mode_name(mode) << half;
+            EXPECT_LT(darkest, 0.9f) << obscurance::obscurance_mode_name(mode) << half;
+        }
+    }
+}
+
+// The stage markers (the engine's per-stage timer queries) open and close around each stage
+// the settings run, in order: area1's moments first, no blur when it is off or for the reference.
+TEST_F(ObscurancePassTest, EachStageIsMarkedInTheOrderItRuns) {
+    build_scene({kFloor, kWall});
+    std::vector<std::string> marks;
+    obscurance::PassMarkers markers;
+    markers.begin = [](void* context, const char* stage) {
+        static_cast<std::vector<std::string>*>(context)->push_back(stage);
+    };
+    markers.end = [](void* context) {
+        static_cast<std::vector<std::string>*>(context)->push_back("end");
+    };
+    markers.context = &marks;
+    pass_.set_markers(markers);
+    const std::vector<std::string> estimate = {"vo_estimate", "end"};
+    const std::vector<std::string> blur = {"vo_blur", "end"};
+    const std::vector<std::string> composite = {"vo_composite", "end"};
+    auto joined = [](std::initializer_list<std::vector<std::string>> parts) {
+        std::vector<std::string> all;
+        for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+        return all;
+    };
+    struct Case {
+        ObscuranceMode mode;
+        bool blur;
+        std::vector<std::string> expected;
+    };
+    const Case cases[] = {
+        {ObscuranceMode::lines5, true, joined({estimate, blur, composite})},
+        {ObscuranceMode::points12, false, joined({estimate, composite})},
+        {ObscuranceMode::area1, true, joined({{"vo_moments", "end"}, estimate, blur, composite})},
+        {ObscuranceMode::reference, true, joined({estimate, composite})},
+    };
+    for (const Case& c : cases) {
+        marks.clear();
+        ObscuranceSettings s = settings_for(c.mode);
+        s.blur = c.blur;
+        run(s);
+        EXPECT_EQ(marks, c.expected) << obscurance::obscurance_mode_name(c.mode);
     }
 }
 
