@@ -25,7 +25,8 @@
 //
 // kMomentsFragment: (distance, distance^2) per scene texel, level 0 of the moments' mip chain.
 //
-// kBlur: one direction of a separable 9-tap Gaussian, each tap weighted down by its
+// kBlur: one direction of a separable 5-tap filter that averages the 4-pixel rotation pattern
+// exactly (weights 1/2, 1, 1, 1, 1/2), each tap weighted down by its
 // depth difference relative to the centre's distance and by the angle between the normals. It
 // reads only the estimate's output, (open, distance, normal x, normal y): one fetch per tap.
 //

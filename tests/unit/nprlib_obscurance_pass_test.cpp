@@ -339,7 +339,7 @@ TEST_F(ObscurancePassTest, TheBlurKeepsTheWallAndTheFloorApartAndSmoothsThePatte
         }
         return sum / n;
     };
-    EXPECT_LT(roughness(blurred), 0.5 * roughness(raw));
+    EXPECT_LT(roughness(blurred), 0.25 * roughness(raw));
 }
 
 TEST_F(ObscurancePassTest, SkyIsNeverDarkenedAndTheColourIsMultipliedOrShown) {
