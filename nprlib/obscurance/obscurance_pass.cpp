@@ -89,6 +89,8 @@ void ObscurancePass::reset() {
     for (Target& target : targets_) target = Target{};
     result_ = nullptr;
     target_width_ = target_height_ = 0;
+    gl_version_ = 0;  // the next context may be another
+    compute_refused_ = false;
 }
 
 // A full-screen program from a fragment source, into `program`; false with `error` when it
@@ -371,8 +373,14 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
     if (scene.width <= 0 || scene.height <= 0) return true;
     const int samples = effective_sample_count(settings);
     if (gl_version_ == 0) gl_version_ = epoxy_gl_version();
-    const bool compute = settings.compute && gl_version_ >= 43;
-    if (!build_programs(settings.mode, samples, compute, error)) return false;
+    const bool compute = settings.compute && gl_version_ >= 43 && !compute_refused_;
+    if (!build_programs(settings.mode, samples, compute, error)) {
+        // A driver that refuses the compute stages may still take the full-screen ones.
+        if (!compute) return false;
+        compute_refused_ = true;
+        error.clear();
+        if (!build_programs(settings.mode, samples, false, error)) return false;
+    }
     const int width = settings.half_resolution ? (scene.width + 1) / 2 : scene.width;
     const int height = settings.half_resolution ? (scene.height + 1) / 2 : scene.height;
     SavedState saved;

@@ -94,8 +94,9 @@ class ObscurancePass {
 
     gl::ObjectTracker* tracker_;
     PassMarkers markers_;
-    int gl_version_ = 0;    // the context's, e.g. 45; 0 until the first apply
-    bool compute_ = false;  // the estimates and the blur are built as compute programs
+    int gl_version_ = 0;            // the context's, e.g. 45; 0 until the first apply
+    bool compute_ = false;          // the estimates and the blur are built as compute programs
+    bool compute_refused_ = false;  // a compute stage did not build: full-screen ones instead
     std::array<gl::Program, kObscuranceModes> estimate_;
     std::array<SampleTableKey, kObscuranceModes> uploaded_{};  // per estimate program
     gl::Program blur_, composite_, moments_program_;
