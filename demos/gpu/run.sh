@@ -42,7 +42,7 @@ if ! smoke; then
 fi
 echo "smoke ok after $(( $(date +%s) - start )) s"
 BUILD=$root/.gpu/build NPRQ_DATA=$root/.gpu/data PYTHON=python3 timeout "${VO_BUDGET:-270}" \
-    bash demos/bench_obscurance.sh --rounds 3 --res "640x480 1024x768 1920x1080" --skip-error \
+    bash demos/bench_obscurance.sh --rounds 3 --res "640x480 1024x768" --skip-error \
     --out /tmp/vo > "$OUT/bench.log" 2>&1
 echo "bench rc=$? after $(( $(date +%s) - start )) s"
 cp /tmp/vo/cost.tsv /tmp/vo/renderer.txt "$OUT/" 2>/dev/null
