@@ -55,6 +55,7 @@ class Cell:
         self.frame_files = []
         self.startup = []
         self.tails = []  # (99th / median, 1% low / average fps) per run that has frame times
+        self.tails_failed = 0  # runs that worked whose frame times were asked for and not had
 
     def add(self, r):
         if r.get("failed") or r.get("fps") is None:
@@ -71,6 +72,8 @@ class Cell:
         tail = tail_of(r)
         if tail:
             self.tails.append(tail)
+        elif (r.get("tail") or {}).get("failed"):
+            self.tails_failed += 1
 
     def median(self):
         return statistics.median(self.fps) if self.fps else None
@@ -109,13 +112,15 @@ def tail_rows(records, cells):
     for key in cell_keys(records):
         for column in columns_of(records):
             c = cells[key].get(column)
-            if c is None or not c.tails:
+            if c is None or not (c.tails or c.tails_failed):
                 continue
             met = sum(1 for p99, low in c.tails
                       if p99 <= TAIL_MAX_P99_OVER_MEDIAN and low >= TAIL_MIN_LOW_OVER_AVG)
+            unmeasured = ", %d without frame times (see logs/)" % c.tails_failed \
+                if c.tails_failed else ""
             rows.append([key[0], key[1], column, ", ".join("%.2f" % t[0] for t in c.tails),
                          ", ".join("%.2f" % t[1] for t in c.tails),
-                         "%d of %d" % (met, len(c.tails))])
+                         "%d of %d%s" % (met, len(c.tails) + c.tails_failed, unmeasured)])
     return rows
 
 
