@@ -93,18 +93,23 @@ void ObscurancePass::reset() {
     compute_refused_ = false;
 }
 
-// A full-screen program from a fragment source, into `program`; false with `error` when it
-// does not build.
-bool ObscurancePass::build_fullscreen(gl::Program& program, const char* name,
-                                      const std::string& fragment, std::string& error) {
-    gl::ProgramBuild build =
-        gl::Program::build({name, kFullscreenVertex, fragment.c_str()}, tracker_);
+// `source` built into `program`; false with `error` when it does not build.
+bool ObscurancePass::build(gl::Program& program, const gl::ProgramSource& source,
+                           std::string& error) {
+    gl::ProgramBuild build = gl::Program::build(source, tracker_);
     if (!build.ok()) {
         error = build.error;
         return false;
     }
     program = std::move(build.program);
     return true;
+}
+
+// A full-screen program from a fragment source, into `program`; false with `error` when it
+// does not build.
+bool ObscurancePass::build_fullscreen(gl::Program& program, const char* name,
+                                      const std::string& fragment, std::string& error) {
+    return build(program, {name, kFullscreenVertex, fragment.c_str()}, error);
 }
 
 // The estimate or the blur, whose source defines pass_result(pixel): a compute program, or a
@@ -119,13 +124,7 @@ bool ObscurancePass::build_stage(gl::Program& program, const char* name, const s
                                body + kComputeMain;
     gl::ProgramSource stage{name, nullptr, nullptr};
     stage.compute = source.c_str();
-    gl::ProgramBuild build = gl::Program::build(stage, tracker_);
-    if (!build.ok()) {
-        error = build.error;
-        return false;
-    }
-    program = std::move(build.program);
-    return true;
+    return build(program, stage, error);
 }
 
 bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, bool compute,

@@ -69,6 +69,7 @@ class ObscurancePass {
         int count = 0;
         bool operator==(const SampleTableKey&) const = default;
     };
+    bool build(gl::Program& program, const gl::ProgramSource& source, std::string& error);
     bool build_fullscreen(gl::Program& program, const char* name, const std::string& fragment,
                           std::string& error);
     bool build_stage(gl::Program& program, const char* name, const std::string& body,
