@@ -119,9 +119,14 @@ void RenderDispatch::draw(const nqr_frame& frame) {
     if (r && r->begin_frame) r->begin_frame(&frame);
     draw_scene(r, frame);
     if (use_gbuffer) {
-        if (obscurance) apply_obscurance(frame);
+        // Without a plugin post-process the obscurance composite writes the window itself,
+        // which saves the copy of the scene that would follow it.
+        const bool onto_window = obscurance && apply_obscurance(frame, !(r && r->post_process));
         if (trace_) trace_->lap(TraceStage::Obscurance);
-        post_process(r, frame);
+        if (onto_window)
+            bind_window(frame);
+        else
+            post_process(r, frame);
     }
     if (r && r->end_frame) r->end_frame(&frame);
     if (trace_) trace_->lap(TraceStage::Post);
@@ -155,13 +160,18 @@ void RenderDispatch::draw_scene(const nqr_renderer* r, const nqr_frame& frame) {
     }
 }
 
+void RenderDispatch::bind_window(const nqr_frame& frame) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const int* vp = frame.camera.viewport;
+    glViewport(vp[0], vp[1], vp[2], vp[3]);
+}
+
 // Back on the window: the plugin's post-process pass reads the scene textures and draws the
 // final image; without one, the colour is copied over as it is.
 void RenderDispatch::post_process(const nqr_renderer* r, const nqr_frame& frame) {
     const nqr_gbuffer& g = gbuffer_.gbuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    bind_window(frame);
     const int* vp = frame.camera.viewport;
-    glViewport(vp[0], vp[1], vp[2], vp[3]);
     if (timers_) timers_->begin(GpuPass::Post);
     if (r && r->post_process) {
         r->post_process(&frame, &g);
@@ -176,23 +186,30 @@ void RenderDispatch::post_process(const nqr_renderer* r, const nqr_frame& frame)
 }
 
 // Before the plugin's post-process (or the copy to the window): the scene colour multiplied by
-// its obscurance. A pass that cannot build is reported once and stays off.
-void RenderDispatch::apply_obscurance(const nqr_frame& frame) {
+// its obscurance, in the G-buffer or, `onto_window`, straight onto the window's viewport (true
+// when it did). A pass that cannot build is reported once and stays off.
+bool RenderDispatch::apply_obscurance(const nqr_frame& frame, bool onto_window) {
     const nqr_gbuffer& g = gbuffer_.gbuffer();
     npr::obscurance::SceneTextures scene;
     scene.framebuffer = g.framebuffer;
+    scene.colour_texture = g.color_texture;
     scene.depth_texture = g.depth_texture;
     scene.normal_texture = g.normal_texture;
     scene.width = g.width;
     scene.height = g.height;
     std::copy_n(frame.camera.projection, 16, scene.projection);
+    npr::obscurance::CompositeTarget window;
+    std::copy_n(frame.camera.viewport, 4, window.viewport);
     if (timers_) timers_->begin("obscurance");
     std::string error;
-    if (!obscurance_.apply(scene, obscurance_settings_, error)) {
+    const bool applied =
+        obscurance_.apply(scene, obscurance_settings_, error, onto_window ? &window : nullptr);
+    if (!applied) {
         obscurance_failed_ = true;
         plugins_.engine_table().log(NQR_LOG_ERROR, ("obscurance off: " + error).c_str());
     }
     if (timers_) timers_->end();
+    return applied && onto_window;
 }
 
 }  // namespace nq

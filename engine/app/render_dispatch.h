@@ -59,8 +59,9 @@ class RenderDispatch {
     bool plugin_draws_everything() const;
     void sync_defaults();
     void draw_scene(const nqr_renderer* r, const nqr_frame& frame);
+    void bind_window(const nqr_frame& frame);
     void post_process(const nqr_renderer* r, const nqr_frame& frame);
-    void apply_obscurance(const nqr_frame& frame);
+    bool apply_obscurance(const nqr_frame& frame, bool onto_window);
     void dump_scene(const nqr_frame& frame);
 
     PluginHost& plugins_;

@@ -335,13 +335,20 @@ void main() {
 const char* const kCompositeFragment = R"(
 in vec2 v_uv;
 uniform sampler2D u_open;
+uniform sampler2D u_colour;  // the scene's, with u_copy
 uniform float u_strength;
 uniform int u_show;
+uniform int u_copy;  // write colour * obscurance (else obscurance, for multiplicative blending)
 layout(location = 0) out vec4 o_color;
 void main() {
     float open = texture(u_open, v_uv).r;
-    float share = u_show != 0 ? 1.0 : scene_normal(scene_texel(v_uv)).a;
-    o_color = vec4(vec3(mix(1.0, open, u_strength * share)), 1.0);
+    ivec2 texel = scene_texel(v_uv);
+    float share = u_show != 0 ? 1.0 : scene_normal(texel).a;
+    vec3 factor = vec3(mix(1.0, open, u_strength * share));
+    if (u_copy != 0 && u_show == 0)
+        o_color = vec4(texelFetch(u_colour, texel, 0).rgb * factor, 1.0);
+    else
+        o_color = vec4(factor, 1.0);
 }
 )";
 

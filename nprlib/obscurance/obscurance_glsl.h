@@ -31,7 +31,8 @@
 // reads only the estimate's output, (open, distance, normal x, normal y): one fetch per tap.
 //
 // kCompositeFragment: the obscurance scaled by strength, written for multiplicative blending
-// over the scene colour (or shown alone).
+// over the scene colour, or (u_copy) the scene colour times it written elsewhere; or the
+// obscurance shown alone.
 #pragma once
 
 namespace nq::npr::obscurance {

@@ -18,6 +18,7 @@ constexpr int kUnitDepth = 0;
 constexpr int kUnitNormal = 1;
 constexpr int kUnitOpen = 2;
 constexpr int kUnitMoments = 3;
+constexpr int kUnitColour = 4;
 constexpr int kReferenceGrid = 64;  // lines per side of the reference's grid (~3,200 lines)
 // area1's mip chain of depth moments: levels 0..7, its size padded to a multiple of the last
 // level's texel (128) so that every level averages exact 2 x 2 blocks, as the shader assumes.
@@ -168,6 +169,7 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, bool compu
             return false;
         }
         gl::bind_sampler_units(composite_, {"u_depth", "u_normal", "u_open"});
+        glUniform1i(composite_.location("u_colour"), kUnitColour);
     }
     if (!empty_vertex_array_) empty_vertex_array_ = gl::VertexArray::create(tracker_);
     return true;
@@ -347,15 +349,26 @@ void ObscurancePass::blur() {
     }
 }
 
-void ObscurancePass::composite(const SceneTextures& scene, const ObscuranceSettings& settings) {
+void ObscurancePass::composite(const SceneTextures& scene, const ObscuranceSettings& settings,
+                               const CompositeTarget* elsewhere) {
+    bind_scene(composite_, scene);
+    glUniform1f(composite_.location("u_strength"), settings.show ? 1.0f : settings.strength);
+    glUniform1i(composite_.location("u_show"), settings.show ? 1 : 0);
+    glUniform1i(composite_.location("u_copy"), elsewhere ? 1 : 0);
+    bind_texture(kUnitOpen, result_->id());
+    if (elsewhere) {  // colour * obscurance, written over the target
+        bind_texture(kUnitColour, scene.colour_texture);
+        glBindFramebuffer(GL_FRAMEBUFFER, elsewhere->framebuffer);
+        const int* v = elsewhere->viewport;
+        glViewport(v[0], v[1], v[2], v[3]);
+        glDisable(GL_BLEND);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        return;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, scene.framebuffer);
     const GLenum colour_only = GL_COLOR_ATTACHMENT0;
     glDrawBuffers(1, &colour_only);
     glViewport(0, 0, scene.width, scene.height);
-    bind_scene(composite_, scene);
-    glUniform1f(composite_.location("u_strength"), settings.show ? 1.0f : settings.strength);
-    glUniform1i(composite_.location("u_show"), settings.show ? 1 : 0);
-    bind_texture(kUnitOpen, result_->id());
     if (settings.show) {
         glDisable(GL_BLEND);
     } else {
@@ -368,7 +381,7 @@ void ObscurancePass::composite(const SceneTextures& scene, const ObscuranceSetti
 }
 
 bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings& settings,
-                           std::string& error) {
+                           std::string& error, const CompositeTarget* elsewhere) {
     if (scene.width <= 0 || scene.height <= 0) return true;
     const int samples = effective_sample_count(settings);
     if (gl_version_ == 0) gl_version_ = epoxy_gl_version();
@@ -407,7 +420,7 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
         mark_end();
     }
     mark_begin("vo_composite");
-    composite(scene, settings);
+    composite(scene, settings, elsewhere);
     mark_end();
     if (compute_) glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindVertexArray(0);

@@ -20,10 +20,19 @@ namespace nq::npr::obscurance {
 // n * 0.5 + 0.5, alpha 1 where a surface should receive obscurance).
 struct SceneTextures {
     GLuint framebuffer = 0;
+    GLuint colour_texture = 0;  // attachment 0's; read only when compositing elsewhere
     GLuint depth_texture = 0;
     GLuint normal_texture = 0;
     int width = 0, height = 0;
     float projection[16] = {};  // column-major, view to clip
+};
+
+// Where the composite may write instead of multiplying the scene's colour in place: another
+// framebuffer's rectangle (x, y, width, height) of the scene's size, e.g. the window, so that
+// no copy of the scene need follow. Its draw buffers are used as they are set.
+struct CompositeTarget {
+    GLuint framebuffer = 0;
+    int viewport[4] = {};
 };
 
 // Optional GPU-time markers around each stage ("vo_moments", "vo_estimate", "vo_blur",
@@ -40,10 +49,13 @@ class ObscurancePass {
 
     void set_markers(const PassMarkers& markers) { markers_ = markers; }
 
-    // Multiplies the scene's colour by its obscurance. Leaves blending and depth testing off
-    // as they were found, the scene framebuffer bound with both of its colour outputs.
-    // False with `error` when a program does not build (the scene is left as it was).
-    bool apply(const SceneTextures& scene, const ObscuranceSettings& settings, std::string& error);
+    // Multiplies the scene's colour by its obscurance: in place, or into `elsewhere` (the
+    // scene's colour times its obscurance, the scene left as it was). Leaves blending, depth
+    // testing and the viewport as they were found, and the scene framebuffer bound with both of
+    // its colour outputs (or `elsewhere`'s). False with `error` when a program does not build
+    // (nothing drawn).
+    bool apply(const SceneTextures& scene, const ObscuranceSettings& settings, std::string& error,
+               const CompositeTarget* elsewhere = nullptr);
 
     // Whether the last apply ran the estimate and the blur as compute programs (vo_compute where
     // the context has GL 4.3).
@@ -84,7 +96,8 @@ class ObscurancePass {
     void estimate(const SceneTextures& scene, const ObscuranceSettings& settings, int samples);
     void run_stage(const Target& to);
     void blur();
-    void composite(const SceneTextures& scene, const ObscuranceSettings& settings);
+    void composite(const SceneTextures& scene, const ObscuranceSettings& settings,
+                   const CompositeTarget* elsewhere);
     void bind_scene(gl::Program& program, const SceneTextures& scene);
     void mark_begin(const char* stage) const {
         if (markers_.begin) markers_.begin(markers_.context, stage);

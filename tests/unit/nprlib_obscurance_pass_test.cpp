@@ -121,7 +121,8 @@ class ObscurancePassTest : public GlSuiteTest<ObscurancePassTest> {
     }
 
     // Runs the pass; the scene colour (white before) per pixel, 0..1 from its red channel.
-    std::vector<float> run(const ObscuranceSettings& settings) {
+    // `side`: the scene's width and height, the lower-left part of the textures.
+    std::vector<float> run(const ObscuranceSettings& settings, int side = kSize) {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
         const GLfloat white[] = {1, 1, 1, 1};
         glClearBufferfv(GL_COLOR, 0, white);
@@ -129,7 +130,7 @@ class ObscurancePassTest : public GlSuiteTest<ObscurancePassTest> {
         scene.framebuffer = framebuffer_;
         scene.depth_texture = depth_;
         scene.normal_texture = normal_;
-        scene.width = scene.height = kSize;
+        scene.width = scene.height = side;
         std::copy_n(glm::value_ptr(projection_), 16, scene.projection);
         std::string error;
         EXPECT_TRUE(pass_.apply(scene, settings, error)) << error;
@@ -370,6 +371,88 @@ TEST_F(ObscurancePassTest, SkyIsNeverDarkenedAndTheColourIsMultipliedOrShown) {
     EXPECT_GT(darker, 100);
 }
 
+// Compositing elsewhere (the engine's window when no plugin post-process follows): the other
+// framebuffer's rectangle gets the scene colour times the obscurance, the pixel for pixel
+// result of multiplying in place, nothing around it is drawn and the scene keeps its colour.
+TEST_F(ObscurancePassTest, CompositingElsewhereWritesTheMultipliedColourThere) {
+    build_scene({kFloor, kWall});
+    const GLfloat colour[] = {0.8f, 0.5f, 0.25f, 1.0f};
+    const auto read_rgb = [](GLuint framebuffer, int x, int y, int w, int h) {
+        std::vector<uint8_t> rgb(size_t(w) * size_t(h) * 3);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(x, y, w, h, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+        return rgb;
+    };
+    obscurance::SceneTextures scene;
+    scene.framebuffer = framebuffer_;
+    scene.colour_texture = colour_;
+    scene.depth_texture = depth_;
+    scene.normal_texture = normal_;
+    scene.width = scene.height = kSize;
+    std::copy_n(glm::value_ptr(projection_), 16, scene.projection);
+    constexpr int kOtherWidth = kSize + 20, kOtherHeight = kSize + 10, kX = 7, kY = 5;
+    GLuint other_texture = 0, other = 0;
+    glGenTextures(1, &other_texture);
+    glBindTexture(GL_TEXTURE_2D, other_texture);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kOtherWidth, kOtherHeight);
+    glGenFramebuffers(1, &other);
+    glBindFramebuffer(GL_FRAMEBUFFER, other);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, other_texture, 0);
+    obscurance::CompositeTarget elsewhere;
+    elsewhere.framebuffer = other;
+    const int viewport[4] = {kX, kY, kSize, kSize};
+    std::copy_n(viewport, 4, elsewhere.viewport);
+    for (bool show : {false, true}) {
+        ObscuranceSettings s = settings_for(ObscuranceMode::lines5);
+        s.show = show;
+        std::string error;
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        glClearBufferfv(GL_COLOR, 0, colour);
+        ASSERT_TRUE(pass_.apply(scene, s, error)) << error;
+        const std::vector<uint8_t> in_place = read_rgb(framebuffer_, 0, 0, kSize, kSize);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        glClearBufferfv(GL_COLOR, 0, colour);
+        glBindFramebuffer(GL_FRAMEBUFFER, other);
+        const GLfloat blue[] = {0.0f, 0.0f, 1.0f, 1.0f};
+        glClearBufferfv(GL_COLOR, 0, blue);
+        glViewport(1, 2, 3, 4);
+        ASSERT_TRUE(pass_.apply(scene, s, error, &elsewhere)) << error;
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        GLint bound = 0, drawn_viewport[4] = {};
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+        glGetIntegerv(GL_VIEWPORT, drawn_viewport);
+        EXPECT_EQ(GLuint(bound), other);
+        EXPECT_EQ(std::vector<int>(drawn_viewport, drawn_viewport + 4),
+                  std::vector<int>({1, 2, 3, 4}));  // as the pass found it
+        const std::vector<uint8_t> there = read_rgb(other, 0, 0, kOtherWidth, kOtherHeight);
+        const std::vector<uint8_t> scene_after = read_rgb(framebuffer_, 0, 0, kSize, kSize);
+        int differing = 0, darker = 0, outside_drawn = 0, scene_changed = 0;
+        for (int y = 0; y < kOtherHeight; ++y) {
+            for (int x = 0; x < kOtherWidth; ++x) {
+                const uint8_t* p = &there[(size_t(y) * kOtherWidth + size_t(x)) * 3];
+                const bool inside = x >= kX && x < kX + kSize && y >= kY && y < kY + kSize;
+                if (!inside) {
+                    outside_drawn += !(p[0] == 0 && p[1] == 0 && p[2] == 255);
+                    continue;
+                }
+                const size_t i = (size_t(y - kY) * kSize + size_t(x - kX)) * 3;
+                for (int c = 0; c < 3; ++c) differing += std::abs(p[c] - in_place[i + c]) > 1;
+                darker += p[0] < (show ? 230 : 0.8f * 230);
+            }
+        }
+        for (size_t i = 0; i < scene_after.size(); ++i)
+            scene_changed += std::abs(scene_after[i] - std::lround(colour[i % 3] * 255)) > 1;
+        EXPECT_EQ(differing, 0) << "show " << show;
+        EXPECT_EQ(outside_drawn, 0) << "show " << show;
+        EXPECT_EQ(scene_changed, 0) << "show " << show;
+        EXPECT_GT(darker, 100) << "show " << show;
+    }
+    glDeleteFramebuffers(1, &other);
+    glDeleteTextures(1, &other_texture);
+}
+
 // A style that keeps its ambient light apart writes its share in the normal's alpha: only that
 // share of the colour is darkened, colour * (1 - share * (1 - open)).
 TEST_F(ObscurancePassTest, OnlyTheAmbientShareOfTheColourIsDarkened) {
@@ -483,20 +566,22 @@ TEST_F(ObscurancePassTest, ASceneOfAnotherSizeGetsTargetsOfItsSize) {
 }
 
 // vo_compute: the estimate and the blur as compute programs give the picture the full-screen
-// triangles give, in every mode, at full and half resolution (the context here has GL 4.5).
+// triangles give, in every mode, at full and half resolution (the context here has GL 4.5),
+// also where the size is no multiple of the compute groups' (8).
 TEST_F(ObscurancePassTest, ComputeAndFragmentStagesGiveTheSamePicture) {
     build_scene({kFloor, kWall});
     for (ObscuranceMode mode : kModes) {
         if (mode == ObscuranceMode::reference) continue;  // slow; the same estimate as lines
-        for (bool half : {false, true}) {
+        for (auto [half, side] : {std::pair{false, kSize}, std::pair{true, kSize},
+                                  std::pair{false, kSize - 27}, std::pair{true, kSize - 27}}) {
             ObscuranceSettings s = settings_for(mode);
             s.blur = true;
             s.half_resolution = half;
             s.compute = false;
-            const std::vector<float> fragment = run(s);
+            const std::vector<float> fragment = run(s, side);
             EXPECT_FALSE(pass_.ran_compute());
             s.compute = true;
-            const std::vector<float> compute = run(s);
+            const std::vector<float> compute = run(s, side);
             EXPECT_TRUE(pass_.ran_compute());
             float worst = 0.0f, darkest = 1.0f;
             for (size_t i = 0; i < compute.size(); ++i) {
@@ -504,7 +589,8 @@ TEST_F(ObscurancePassTest, ComputeAndFragmentStagesGiveTheSamePicture) {
                 darkest = std::min(darkest, compute[i]);
             }
             // One step of the 8-bit colour: the two paths only round differently.
-            EXPECT_LE(worst, 1.5f / 255.0f) << obscurance::obscurance_mode_name(mode) << half;
+            EXPECT_LE(worst, 1.5f / 255.0f)
+                << obscurance::obscurance_mode_name(mode) << " half " << half << " side " << side;
             EXPECT_LT(darkest, 0.9f) << obscurance::obscurance_mode_name(mode) << half;
         }
     }
