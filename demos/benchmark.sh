@@ -90,42 +90,15 @@ for demo in $demos; do
         echo "benchmark.sh: gallery of $demo failed (see $out/logs/gallery_$demo.log)" >&2
 done
 
-# Line quality (bin/edgequality, the rules the tests use): per demo, one engine run under
-# `technical` pauses on $quality_frames consecutive frames from the gallery frame and shoots
-# each twice, as the object-id reference (tech_shading 3, no lines) and with its silhouettes
-# over it; silhouette recall/precision on the first frame, flicker over all of them. The other
-# styles draw no lines (illustrative marks silhouettes with rim light), so only technical has
-# these figures.
+# Line quality of the technical style (demos/line_quality.sh): silhouette recall/precision on
+# the gallery frame, flicker over $quality_frames consecutive frames from it. The other styles
+# draw no lines (illustrative marks silhouettes with rim light), so only technical has these.
 mkdir -p "$out/quality"
 if [[ " $styles " == *" technical "* ]]; then
-    reference_settings="tech_shading 3; tech_silhouettes 0; tech_creases 0; tech_world_edges 0"
-    reference_settings="$reference_settings; tech_shadows 0; tech_fade 0; tech_edge_colors 0"
     for demo in $demos; do
-        frames_dir=$out/quality/$demo
-        frame=$(frame_of "$demo")
-        mkdir -p "$frames_dir"
-        at_frames=()
-        pairs=()
-        for ((k = 0; k < quality_frames; k++)); do
-            f=$((frame + k))
-            at_frames+=(+demo_at "$f" "pause 1; $reference_settings; wait; wait; screenshot $frames_dir/ref_$f.png; tech_silhouettes 1; wait; wait; screenshot $frames_dir/lines_$f.png; pause 0")
-            pairs+=("$frames_dir/ref_$f.png" "$frames_dir/lines_$f.png")
-        done
-        if SDL_VIDEODRIVER=offscreen "$engine" -userdir "$out/user_quality" -basedir "$data" \
-            -game lq1 -width "${first_size%x*}" -height "${first_size#*x}" -window \
-            +con_notifytime 0 +scr_centertime 0 +scr_drawhud 0 +gl_polyblend 0 \
-            +r_plugin technical "${at_frames[@]}" +timedemo "$demo" +quit \
-            > "$out/logs/quality_$demo.log" 2>&1 &&
-            "$build/bin/edgequality" silhouettes "${pairs[0]}" "${pairs[1]}" --json \
-                > "$frames_dir/silhouettes.json" &&
-            "$build/bin/edgequality" flicker "${pairs[@]}" --json > "$frames_dir/flicker.json"; then
-            printf '{"demo": "%s", "style": "technical", "size": "%s", "first_frame": %d, "frames": %d, "silhouettes": %s, "flicker": %s}\n' \
-                "$demo" "$first_size" "$frame" "$quality_frames" \
-                "$(tr -d '\n' < "$frames_dir/silhouettes.json")" \
-                "$(tr -d '\n' < "$frames_dir/flicker.json")" >> "$out/quality.jsonl"
-        else
-            echo "benchmark.sh: line quality of $demo failed (see $out/logs/quality_$demo.log)" >&2
-        fi
+        "$root/demos/line_quality.sh" --demo "$demo" --frame "$(frame_of "$demo")" \
+            --frames "$quality_frames" --size "$first_size" --out "$out" ||
+            echo "benchmark.sh: line quality of $demo failed" >&2
     done
 fi
 
