@@ -23,15 +23,19 @@ Pixel at(const RgbImage& img, int x, int y) {
     return {p[0], p[1], p[2]};
 }
 
-TEST(EnginePostProcess, PluginSeesTheSceneNormalsBuffer) {
+// With obscurance on as well, the plugin's post-process still draws the window (obscurance
+// darkens the G-buffer's colour in place and writes nothing there itself).
+class EnginePostProcess : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(EnginePostProcess, PluginSeesTheSceneNormalsBuffer) {
     test::TempDir tmp("nq_post");
     std::string shot = tmp.file("normals.png");
     std::string empty_base = tmp.subdir("nodata");  // no game data: the showroom
-    auto run =
-        test::run_nprquake({"-userdir", tmp.path(), "-basedir", empty_base, "-width", "160",
-                            "-height", "120", "-plugindir", test::test_plugin_dir(), "+r_plugin",
-                            "test_post", "+wait", "+wait", "+screenshot", shot, "+quit"},
-                           tmp.path());
+    auto run = test::run_nprquake(
+        {"-userdir", tmp.path(), "-basedir", empty_base, "-width", "160", "-height", "120",
+         "-plugindir", test::test_plugin_dir(), "+vo_enable", GetParam(), "+r_plugin", "test_post",
+         "+wait", "+wait", "+screenshot", shot, "+quit"},
+        tmp.path());
     ASSERT_EQ(run.exit_code, 0) << run.describe();
     ASSERT_NE(run.out.find("renderer: probe"), std::string::npos) << run.out;
     auto img = read_png(shot);
@@ -51,6 +55,8 @@ TEST(EnginePostProcess, PluginSeesTheSceneNormalsBuffer) {
     EXPECT_GT(floor.b, 150);  // z = sin(pitch) > 0.2
     EXPECT_LT(floor.b, 250);
 }
+
+INSTANTIATE_TEST_SUITE_P(ObscuranceOffAndOn, EnginePostProcess, ::testing::Values("0", "1"));
 
 }  // namespace
 }  // namespace nq
