@@ -2,11 +2,12 @@
 # Volumetric obscurance: what each vo_mode costs and how far it is from the converged reference.
 #
 #   cost   timedemo of demo.dem under `classic`, obscurance off and every mode (lines5, lines9,
-#          points12, points33, area1, lines5 at half resolution, lines5 drawn over full-screen
-#          triangles instead of compute shaders), runs interleaved (off, lines5,
-#          ..., then the next resolution, then the next round): fps, and the obscurance pass's
-#          GPU time per stage from the engine's timer queries (timedemo's "gpu obscurance" and
-#          "gpu vo_*" lines: moments, estimate, blur, composite).
+#          points12, points33, area1, lines5 at half resolution, lines5 at full and at half
+#          resolution drawn over full-screen triangles instead of compute shaders), runs
+#          interleaved (off, lines5, ..., then the next resolution, then the next round): fps,
+#          and the obscurance pass's GPU time per stage from the engine's timer queries
+#          (timedemo's "gpu obscurance" and "gpu vo_*" lines: moments, estimate, blur,
+#          composite).
 #   error  the same paused demo.dem frames with `vo_show 1` in every mode (the sampled ones also
 #          with Poisson-disk and Lloyd sets, vo_sample_set; and electrostatic sets of the
 #          neighbouring counts, vo_sample_count) and in `reference` (64 x 64
@@ -71,6 +72,7 @@ configs=(
     "area1|+vo_enable 1 +vo_mode area1 +vo_blur 1 +vo_half 0"
     "lines5_half|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 1"
     "lines5_fragment|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 0 +vo_compute 0"
+    "lines5_half_fragment|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 1 +vo_compute 0"
 )
 
 if [ "$cost" = 1 ]; then
