@@ -340,9 +340,31 @@ uniform float u_strength;
 uniform int u_show;
 uniform int u_copy;  // write colour * obscurance (else obscurance, for multiplicative blending)
 layout(location = 0) out vec4 o_color;
+// The result at a scene texel: its own at full resolution; at half resolution the four nearest
+// texels' bilinear mix, each weighted down by how far its distance is from the texel's (as the
+// blur weighs taps), so no value crosses a silhouette; plain bilinear where none is near.
+float open_at(ivec2 texel) {
+    ivec2 size = textureSize(u_open, 0);
+    if (size == u_scene_size) return texelFetch(u_open, texel, 0).r;
+    float distance = scene_distance(texel);
+    vec2 at = (vec2(texel) + 0.5) * vec2(size) / vec2(u_scene_size) - 0.5;
+    ivec2 base = ivec2(floor(at));
+    vec2 f = at - vec2(base);
+    float sum = 0.0, weights = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 corner = ivec2(k & 1, k >> 1);
+        vec4 t = texelFetch(u_open, clamp(base + corner, ivec2(0), size - 1), 0);
+        vec2 along = mix(1.0 - f, f, vec2(corner));
+        float depth_weight = max(0.0, 1.0 - abs(t.y - distance) / (0.03 * distance));
+        float w = along.x * along.y * (depth_weight + 1e-4);
+        sum += w * t.x;
+        weights += w;
+    }
+    return sum / max(weights, 1e-8);
+}
 void main() {
-    float open = texture(u_open, v_uv).r;
     ivec2 texel = scene_texel(v_uv);
+    float open = open_at(texel);
     float share = u_show != 0 ? 1.0 : scene_normal(texel).a;
     vec3 factor = vec3(mix(1.0, open, u_strength * share));
     if (u_copy != 0 && u_show == 0)

@@ -32,7 +32,8 @@
 //
 // kCompositeFragment: the obscurance scaled by strength, written for multiplicative blending
 // over the scene colour, or (u_copy) the scene colour times it written elsewhere; or the
-// obscurance shown alone.
+// obscurance shown alone. A half-resolution result is upsampled by depth (the texels'
+// distances), so it does not bleed across silhouettes.
 #pragma once
 
 namespace nq::npr::obscurance {

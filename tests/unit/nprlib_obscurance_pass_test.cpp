@@ -120,6 +120,30 @@ class ObscurancePassTest : public GlSuiteTest<ObscurancePassTest> {
         glClearBufferfv(GL_COLOR, 0, white);
     }
 
+    // The left half of the view is a wall facing the camera at distance 100, the right half
+    // one at 400.
+    void build_foreground_edge() {
+        hits_.assign(size_t(kSize) * kSize, std::nullopt);
+        std::vector<float> depth(size_t(kSize) * kSize);
+        std::vector<uint8_t> normals(size_t(kSize) * kSize * 4, 255);
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                const size_t i = size_t(y) * kSize + size_t(x);
+                const float distance = x < kSize / 2 ? 100.0f : 400.0f;
+                hits_[i] = Hit{distance, {0.0f, 0.0f, 1.0f}};
+                const glm::vec4 clip = projection_ * glm::vec4(ray(x, y) * distance, 1.0f);
+                depth[i] = clip.z / clip.w * 0.5f + 0.5f;
+                normals[i * 4 + 0] = normals[i * 4 + 1] = 128;
+            }
+        }
+        glBindTexture(GL_TEXTURE_2D, depth_);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT,
+                        depth.data());
+        glBindTexture(GL_TEXTURE_2D, normal_);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE,
+                        normals.data());
+    }
+
     // Runs the pass; the scene colour (white before) per pixel, 0..1 from its red channel.
     // `side`: the scene's width and height, the lower-left part of the textures.
     std::vector<float> run(const ObscuranceSettings& settings, int side = kSize) {
@@ -269,27 +293,7 @@ TEST_F(ObscurancePassTest, TheCreaseIsDarkenedByTheVolumeTheWallCutsOff) {
 // A near plane covering the left half in front of a far wall: the wall's pixels beside the
 // silhouette must not be darkened by an occluder far in front of their sphere.
 TEST_F(ObscurancePassTest, AForegroundEdgeLeavesNoHaloBehindItWithAThickness) {
-    // The left half of the view is a wall facing the camera at distance 100, the right half
-    // one at 400.
-    hits_.assign(size_t(kSize) * kSize, std::nullopt);
-    std::vector<float> depth(size_t(kSize) * kSize);
-    std::vector<uint8_t> normals(size_t(kSize) * kSize * 4, 255);
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
-            const size_t i = size_t(y) * kSize + size_t(x);
-            const float distance = x < kSize / 2 ? 100.0f : 400.0f;
-            hits_[i] = Hit{distance, {0.0f, 0.0f, 1.0f}};
-            const glm::vec4 clip = projection_ * glm::vec4(ray(x, y) * distance, 1.0f);
-            depth[i] = clip.z / clip.w * 0.5f + 0.5f;
-            normals[i * 4 + 0] = normals[i * 4 + 1] = 128;
-        }
-    }
-    glBindTexture(GL_TEXTURE_2D, depth_);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSize, kSize, GL_DEPTH_COMPONENT, GL_FLOAT,
-                    depth.data());
-    glBindTexture(GL_TEXTURE_2D, normal_);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE,
-                    normals.data());
+    build_foreground_edge();
     for (ObscuranceMode mode : kModes) {
         ObscuranceSettings s = settings_for(mode);
         s.radius = 48.0f;
@@ -309,6 +313,32 @@ TEST_F(ObscurancePassTest, AForegroundEdgeLeavesNoHaloBehindItWithAThickness) {
         }
         EXPECT_GE(lowest_with, 0.97f) << obscurance::obscurance_mode_name(mode);
         EXPECT_LT(lowest_without, 0.8f) << obscurance::obscurance_mode_name(mode);
+    }
+}
+
+// At half resolution the composite upsamples by depth: the foreground beside the silhouette
+// takes nothing of the darkened background behind it (no thickness: the background is darkened
+// along the edge), as at full resolution.
+TEST_F(ObscurancePassTest, HalfResolutionUpsamplesWithoutBleedingAcrossTheEdge) {
+    build_foreground_edge();
+    for (ObscuranceMode mode : kModes) {
+        ObscuranceSettings s = settings_for(mode);
+        s.radius = 48.0f;
+        s.thickness = 0.0f;
+        s.half_resolution = true;
+        for (bool blur : {false, true}) {
+            s.blur = blur && mode != ObscuranceMode::reference;
+            const std::vector<float> drawn = run(s);
+            float foreground = 1.0f, background = 1.0f;
+            for (int y = 8; y < kSize - 8; ++y) {
+                for (int x = kSize / 2 - 6; x < kSize / 2; ++x)
+                    foreground = std::min(foreground, drawn[size_t(y) * kSize + size_t(x)]);
+                for (int x = kSize / 2; x < kSize / 2 + 6; ++x)
+                    background = std::min(background, drawn[size_t(y) * kSize + size_t(x)]);
+            }
+            EXPECT_GE(foreground, 0.97f) << obscurance::obscurance_mode_name(mode) << blur;
+            EXPECT_LT(background, 0.9f) << obscurance::obscurance_mode_name(mode) << blur;
+        }
     }
 }
 
