@@ -144,6 +144,16 @@ class ObscurancePassTest : public GlSuiteTest<ObscurancePassTest> {
                         normals.data());
     }
 
+    // The lowest value of `drawn` in columns [x0, x1), rows 8 .. kSize - 8 (off the borders).
+    static float lowest_in_columns(const std::vector<float>& drawn, int x0, int x1) {
+        float lowest = 1.0f;
+        for (int y = 8; y < kSize - 8; ++y) {
+            for (int x = x0; x < x1; ++x)
+                lowest = std::min(lowest, drawn[size_t(y) * kSize + size_t(x)]);
+        }
+        return lowest;
+    }
+
     // Runs the pass; the scene colour (white before) per pixel, 0..1 from its red channel.
     // `side`: the scene's width and height, the lower-left part of the textures.
     std::vector<float> run(const ObscuranceSettings& settings, int side = kSize) {
@@ -303,14 +313,8 @@ TEST_F(ObscurancePassTest, AForegroundEdgeLeavesNoHaloBehindItWithAThickness) {
         s.thickness = 0.0f;
         s.blur = false;
         const std::vector<float> infinitely_thick = run(s);
-        float lowest_with = 1.0f, lowest_without = 1.0f;
-        for (int y = 8; y < kSize - 8; ++y) {
-            for (int x = kSize / 2; x < kSize / 2 + 6; ++x) {
-                lowest_with = std::min(lowest_with, with_thickness[size_t(y) * kSize + size_t(x)]);
-                lowest_without =
-                    std::min(lowest_without, infinitely_thick[size_t(y) * kSize + size_t(x)]);
-            }
-        }
+        const float lowest_with = lowest_in_columns(with_thickness, kSize / 2, kSize / 2 + 6);
+        const float lowest_without = lowest_in_columns(infinitely_thick, kSize / 2, kSize / 2 + 6);
         EXPECT_GE(lowest_with, 0.97f) << obscurance::obscurance_mode_name(mode);
         EXPECT_LT(lowest_without, 0.8f) << obscurance::obscurance_mode_name(mode);
     }
@@ -329,13 +333,8 @@ TEST_F(ObscurancePassTest, HalfResolutionUpsamplesWithoutBleedingAcrossTheEdge) 
         for (bool blur : {false, true}) {
             s.blur = blur && mode != ObscuranceMode::reference;
             const std::vector<float> drawn = run(s);
-            float foreground = 1.0f, background = 1.0f;
-            for (int y = 8; y < kSize - 8; ++y) {
-                for (int x = kSize / 2 - 6; x < kSize / 2; ++x)
-                    foreground = std::min(foreground, drawn[size_t(y) * kSize + size_t(x)]);
-                for (int x = kSize / 2; x < kSize / 2 + 6; ++x)
-                    background = std::min(background, drawn[size_t(y) * kSize + size_t(x)]);
-            }
+            const float foreground = lowest_in_columns(drawn, kSize / 2 - 6, kSize / 2);
+            const float background = lowest_in_columns(drawn, kSize / 2, kSize / 2 + 6);
             EXPECT_GE(foreground, 0.97f) << obscurance::obscurance_mode_name(mode) << blur;
             EXPECT_LT(background, 0.9f) << obscurance::obscurance_mode_name(mode) << blur;
         }
