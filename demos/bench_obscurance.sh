@@ -2,8 +2,9 @@
 # Volumetric obscurance: what each vo_mode costs and how far it is from the converged reference.
 #
 #   cost   timedemo of demo.dem under `classic`, obscurance off and every mode (lines5, lines9,
-#          points12, points33, area1, lines5 at half resolution, lines5 at full and at half
-#          resolution drawn over full-screen triangles instead of compute shaders), runs
+#          points12, points33, area1, lines5 at half resolution: all as compute shaders;
+#          lines5 at full and at half resolution drawn over full-screen triangles, and with
+#          each stage the way a trial measures faster, vo_compute 2, the default), runs
 #          interleaved (off, lines5, ..., then the next resolution, then the next round): fps,
 #          and the obscurance pass's GPU time per stage from the engine's timer queries
 #          (timedemo's "gpu obscurance" and "gpu vo_*" lines: moments, estimate, blur,
@@ -73,6 +74,8 @@ configs=(
     "lines5_half|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 1"
     "lines5_fragment|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 0 +vo_compute 0"
     "lines5_half_fragment|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 1 +vo_compute 0"
+    "lines5_fastest|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 0 +vo_compute 2"
+    "lines5_half_fastest|+vo_enable 1 +vo_mode lines5 +vo_blur 1 +vo_half 1 +vo_compute 2"
 )
 
 if [ "$cost" = 1 ]; then

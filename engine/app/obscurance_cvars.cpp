@@ -1,11 +1,13 @@
 #include "app/obscurance_cvars.h"
 
+#include <string>
 #include <utility>
 
 #include "obscurance/sample_tables.h"
 
 namespace nq {
 
+using npr::obscurance::ComputeUse;
 using npr::obscurance::DualRadius;
 using npr::obscurance::ObscuranceMode;
 
@@ -55,9 +57,10 @@ void ObscuranceCvars::register_cvars(CvarRegistry& cvars,
         number("vo_sample_count", "0", 0.0f, float(npr::obscurance::kMaxPointSamples),
                "lines or points instead of the mode's count (0 = the mode's; 4, 6, 8, 10 lines "
                "and 11, 13, 32, 34 points have electrostatic sets)");
-    cvars_[compute] = flag("vo_compute", d.compute,
-                           "estimate and blur as compute shaders (GL 4.3), else full-screen "
-                           "triangles");
+    const std::string compute_default = std::to_string(static_cast<int>(d.compute));
+    cvars_[compute] = number("vo_compute", compute_default.c_str(), 0.0f, 2.0f,
+                             "estimate and blur: 0 full-screen triangles, 1 compute shaders "
+                             "(GL 4.3), 2 each the way a short trial measures faster");
     read();
 }
 
@@ -97,7 +100,10 @@ void ObscuranceCvars::read() {
     s.blur = cvars_[blur]->value() != 0.0f;
     s.half_resolution = cvars_[half]->value() != 0.0f;
     s.show = cvars_[show]->value() != 0.0f;
-    s.compute = cvars_[compute]->value() != 0.0f;
+    const float compute_use = cvars_[compute]->value();
+    s.compute = compute_use >= 2.0f   ? ComputeUse::fastest
+                : compute_use >= 1.0f ? ComputeUse::on
+                                      : ComputeUse::off;
     if (!npr::obscurance::parse_sample_method(cvars_[sample_set]->string(), s.sample_method)) {
         s.sample_method = npr::obscurance::SampleMethod::electrostatic;
         if (warn_) {

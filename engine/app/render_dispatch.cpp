@@ -209,6 +209,12 @@ bool RenderDispatch::apply_obscurance(const nqr_frame& frame, bool onto_window) 
         plugins_.engine_table().log(NQR_LOG_ERROR, ("obscurance off: " + error).c_str());
     }
     if (timers_) timers_->end();
+    if (obscurance_.decisions() != reported_decisions_) {  // vo_compute 2 made its choice
+        reported_decisions_ = obscurance_.decisions();
+        const std::string choice = npr::obscurance::describe_choice(obscurance_.trial());
+        plugins_.engine_table().log(
+            NQR_LOG_INFO, ("obscurance estimate and blur (vo_compute 2): " + choice).c_str());
+    }
     return applied && onto_window;
 }
 

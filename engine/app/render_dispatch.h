@@ -72,6 +72,7 @@ class RenderDispatch {
     npr::obscurance::ObscuranceSettings obscurance_settings_;  // disabled by default
     npr::obscurance::ObscurancePass obscurance_;
     bool obscurance_failed_ = false;  // reported once; off for the rest of the run
+    int reported_decisions_ = 0;      // the pass's vo_compute 2 choices told on the console
     std::string dump_path_;
     std::function<void(const std::string&)> dump_done_;
 };

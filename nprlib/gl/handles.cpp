@@ -20,6 +20,9 @@ GLuint generate_name(ObjectKind kind) {
         case ObjectKind::program:
             id = glCreateProgram();
             break;
+        case ObjectKind::query:
+            glGenQueries(1, &id);
+            break;
         case ObjectKind::shader:  // needs a stage: glCreateShader(stage) + adopt
         case ObjectKind::sync:    // GLsync is a pointer, owned by StreamBuffer
         case ObjectKind::count:
@@ -47,6 +50,9 @@ void delete_name(ObjectKind kind, GLuint id) {
             break;
         case ObjectKind::program:
             glDeleteProgram(id);
+            break;
+        case ObjectKind::query:
+            glDeleteQueries(1, &id);
             break;
         case ObjectKind::sync:
         case ObjectKind::count:

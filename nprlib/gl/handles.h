@@ -1,6 +1,7 @@
 // Move-only owners of OpenGL object names: Buffer, VertexArray, Texture, Framebuffer, Shader,
-// ProgramName. Each deletes its object on destruction (the GL context must still be current, as
-// it is in a renderer's shutdown) and reports creation and deletion to an optional ObjectTracker.
+// ProgramName, Query. Each deletes its object on destruction (the GL context must still be current,
+// as it is in a renderer's shutdown) and reports creation and deletion to an optional
+// ObjectTracker.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -70,5 +71,6 @@ using Texture = Handle<ObjectKind::texture>;
 using Framebuffer = Handle<ObjectKind::framebuffer>;
 using Shader = Handle<ObjectKind::shader>;
 using ProgramName = Handle<ObjectKind::program>;
+using Query = Handle<ObjectKind::query>;
 
 }  // namespace nq::npr::gl

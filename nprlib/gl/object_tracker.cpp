@@ -18,6 +18,8 @@ const char* object_kind_name(ObjectKind kind) {
             return "program";
         case ObjectKind::sync:
             return "sync";
+        case ObjectKind::query:
+            return "query";
         case ObjectKind::count:
             break;
     }

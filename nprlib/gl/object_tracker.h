@@ -8,7 +8,17 @@
 
 namespace nq::npr::gl {
 
-enum class ObjectKind { buffer, vertex_array, texture, framebuffer, shader, program, sync, count };
+enum class ObjectKind {
+    buffer,
+    vertex_array,
+    texture,
+    framebuffer,
+    shader,
+    program,
+    sync,
+    query,
+    count
+};
 
 inline constexpr std::size_t kObjectKindCount = static_cast<std::size_t>(ObjectKind::count);
 

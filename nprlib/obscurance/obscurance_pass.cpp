@@ -80,8 +80,7 @@ struct SavedState {
 }  // namespace
 
 void ObscurancePass::reset() {
-    for (gl::Program& program : estimate_) program.reset();
-    blur_.reset();
+    stages_ = {};
     moments_program_.reset();
     composite_.reset();
     moments_ = Target{};
@@ -92,6 +91,10 @@ void ObscurancePass::reset() {
     target_width_ = target_height_ = 0;
     gl_version_ = 0;  // the next context may be another
     compute_refused_ = false;
+    clock_.reset();
+    trial_.restart();
+    trial_key_ = TrialKey{};
+    trial_issued_ = trial_read_ = 0;
 }
 
 // `source` built into `program`; false with `error` when it does not build.
@@ -114,10 +117,10 @@ bool ObscurancePass::build_fullscreen(gl::Program& program, const char* name,
 }
 
 // The estimate or the blur, whose source defines pass_result(pixel): a compute program, or a
-// full-screen one without compute.
+// full-screen one.
 bool ObscurancePass::build_stage(gl::Program& program, const char* name, const std::string& body,
-                                 std::string& error) {
-    if (!compute_) {
+                                 StagePath path, std::string& error) {
+    if (path == StagePath::fragment) {
         return build_fullscreen(program, name, kFragmentHeader + body + kFragmentMain, error);
     }
     const std::string source = kComputeHeader +
@@ -128,25 +131,34 @@ bool ObscurancePass::build_stage(gl::Program& program, const char* name, const s
     return build(program, stage, error);
 }
 
-bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, bool compute,
+bool ObscurancePass::build_estimate(ObscuranceMode mode, int samples, StagePath path,
                                     std::string& error) {
-    if (compute != compute_) {  // vo_compute changed: the estimates and the blur again
-        for (gl::Program& program : estimate_) program.reset();
-        blur_.reset();
-        compute_ = compute;
+    StagePrograms& programs = stages_[size_t(path)];
+    gl::Program& estimate = programs.estimate[static_cast<size_t>(mode)];
+    if (estimate && programs.uploaded[static_cast<size_t>(mode)].count != samples) {
+        estimate.reset();  // another vo_sample_count
     }
-    gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
-    SampleTableKey& uploaded = uploaded_[static_cast<size_t>(mode)];
-    if (estimate && uploaded.count != samples) estimate.reset();  // another vo_sample_count
-    if (!estimate) {
-        const std::string body = estimate_defines(mode, samples) + kSceneLibrary + kEstimate;
-        if (!build_stage(estimate, "obscurance estimate", body, error)) return false;
-        gl::bind_sampler_units(estimate, {"u_depth", "u_normal"});
-        estimate.use();
-        if (mode == ObscuranceMode::area1)
-            glUniform1i(estimate.location("u_moments"), kUnitMoments);
-        upload_samples(mode, {SampleMethod::electrostatic, samples});
-    }
+    if (estimate) return true;
+    const std::string body = estimate_defines(mode, samples) + kSceneLibrary + kEstimate;
+    if (!build_stage(estimate, "obscurance estimate", body, path, error)) return false;
+    gl::bind_sampler_units(estimate, {"u_depth", "u_normal"});
+    estimate.use();
+    if (mode == ObscuranceMode::area1) glUniform1i(estimate.location("u_moments"), kUnitMoments);
+    upload_samples(programs, mode, {SampleMethod::electrostatic, samples});
+    return true;
+}
+
+bool ObscurancePass::build_blur(StagePath path, std::string& error) {
+    gl::Program& blur = stages_[size_t(path)].blur;
+    if (blur) return true;
+    if (!build_stage(blur, "obscurance blur", kBlur, path, error)) return false;
+    blur.use();
+    glUniform1i(blur.location("u_open"), kUnitOpen);
+    return true;
+}
+
+// What runs the same way on every path: area1's moments, the composite.
+bool ObscurancePass::build_shared(ObscuranceMode mode, std::string& error) {
     if (mode == ObscuranceMode::area1 && !moments_program_) {
         if (!build_fullscreen(moments_program_, "obscurance moments",
                               std::string(kFragmentHeader) + kSceneLibrary + kMomentsFragment,
@@ -154,13 +166,6 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, bool compu
             return false;
         }
         gl::bind_sampler_units(moments_program_, {"u_depth", "u_normal"});
-    }
-    if (!blur_) {
-        if (!build_stage(blur_, "obscurance blur", kBlur, error)) {
-            return false;
-        }
-        blur_.use();
-        glUniform1i(blur_.location("u_open"), kUnitOpen);
     }
     if (!composite_) {
         if (!build_fullscreen(composite_, "obscurance composite",
@@ -173,6 +178,51 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, bool compu
     }
     if (!empty_vertex_array_) empty_vertex_array_ = gl::VertexArray::create(tracker_);
     return true;
+}
+
+// The programs this apply's way (path_) needs.
+bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::string& error) {
+    return build_estimate(mode, samples, path_, error) && build_blur(path_, error) &&
+           build_shared(mode, error);
+}
+
+// vo_compute 2: this frame's way from the trial for `key` (a new trial when the key changes),
+// and the trial frame it runs (-1 when it runs none: decided, or waiting for the last times).
+int ObscurancePass::choose_paths(const TrialKey& key) {
+    if (!StageClock::supported()) {
+        path_ = StagePath::compute;
+        return -1;
+    }
+    if (!(key == trial_key_)) {
+        trial_.restart();
+        trial_key_ = key;
+        trial_issued_ = trial_read_ = 0;
+    }
+    read_trial();
+    if (trial_.decided()) {
+        path_ = trial_.choice();
+        return -1;
+    }
+    if (trial_issued_ == StageTrial::kFrames) {  // waiting for the last frames' times
+        path_ = StagePath::compute;
+        return -1;
+    }
+    const int frame = trial_issued_++;
+    path_ = StageTrial::path_of_frame(frame);
+    return frame;
+}
+
+// The trial frames whose times have arrived, in order, into the trial; a decision counted.
+void ObscurancePass::read_trial() {
+    std::array<uint64_t, kTimedStages> nanoseconds{};
+    while (trial_read_ < trial_issued_ && clock_.read(trial_read_, nanoseconds)) {
+        trial_.record(trial_read_++, nanoseconds);
+        if (trial_.decided()) ++decisions_;
+    }
+}
+
+void ObscurancePass::stamp(int trial_frame, int stamp) {
+    if (trial_frame >= 0) clock_.stamp(trial_frame, stamp);
 }
 
 // The largest k <= 12 such that turning the set by 2 pi / k about the view axis maps every
@@ -206,9 +256,10 @@ int symmetry_order(std::span<const Row> rows) {
 
 // The sample table of a lines or points mode, into its estimate program (in use), with the
 // span its per-pixel rotations cover.
-void ObscurancePass::upload_samples(ObscuranceMode mode, SampleTableKey table) {
-    gl::Program& estimate = estimate_[static_cast<size_t>(mode)];
-    uploaded_[static_cast<size_t>(mode)] = table;
+void ObscurancePass::upload_samples(StagePrograms& programs, ObscuranceMode mode,
+                                    SampleTableKey table) {
+    gl::Program& estimate = programs.estimate[static_cast<size_t>(mode)];
+    programs.uploaded[static_cast<size_t>(mode)] = table;
     const SampleMethod method = table.method;
     constexpr float kFullTurn = 6.2831853f;
     float span = kFullTurn;
@@ -307,11 +358,12 @@ void ObscurancePass::bind_scene(gl::Program& program, const SceneTextures& scene
 
 void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettings& settings,
                               int samples) {
-    gl::Program& program = estimate_[static_cast<size_t>(settings.mode)];
+    StagePrograms& programs = stages_[size_t(path_)];
+    gl::Program& program = programs.estimate[static_cast<size_t>(settings.mode)];
     bind_scene(program, scene);
     const SampleTableKey wanted{settings.sample_method, samples};
-    if (uploaded_[static_cast<size_t>(settings.mode)] != wanted) {
-        upload_samples(settings.mode, wanted);
+    if (programs.uploaded[static_cast<size_t>(settings.mode)] != wanted) {
+        upload_samples(programs, settings.mode, wanted);
     }
     glUniform2f(program.location("u_radii"), settings.radius, settings.radius2);
     glUniform1i(program.location("u_dual_minimum"), settings.dual == DualRadius::minimum);
@@ -319,16 +371,17 @@ void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettin
     glUniform1i(program.location("u_normal_clamp"), settings.normal_clamp ? 1 : 0);
     if (settings.mode == ObscuranceMode::area1) set_moments_scale(program, scene);
     glUniform2i(program.location("u_target_size"), target_width_, target_height_);
-    run_stage(targets_[0]);
+    run_stage(targets_[0], path_);
 }
 
 // The bound estimate or blur program over the whole target, into `to`.
-void ObscurancePass::run_stage(const Target& to) {
-    if (compute_) {
+void ObscurancePass::run_stage(const Target& to, StagePath path) {
+    if (path == StagePath::compute) {
         glBindImageTexture(0, to.texture.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glDispatchCompute(GLuint((target_width_ + kComputeGroupSize - 1) / kComputeGroupSize),
                           GLuint((target_height_ + kComputeGroupSize - 1) / kComputeGroupSize), 1);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the next stage samples it
+        // The next stage samples it; the next frame may draw into it as a framebuffer.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
     } else {
         glBindFramebuffer(GL_FRAMEBUFFER, to.framebuffer.id());
         glViewport(0, 0, target_width_, target_height_);
@@ -338,14 +391,15 @@ void ObscurancePass::run_stage(const Target& to) {
 }
 
 void ObscurancePass::blur() {
-    blur_.use();
-    const GLint step = blur_.location("u_step");
+    gl::Program& program = stages_[size_t(path_)].blur;
+    program.use();
+    const GLint step = program.location("u_step");
     for (int pass = 0; pass < 2; ++pass) {
         const Target& from = targets_[size_t(pass)];
         const Target& to = targets_[size_t(1 - pass)];
         glUniform2i(step, pass == 0 ? 1 : 0, pass == 0 ? 0 : 1);
         bind_texture(kUnitOpen, from.texture.id());
-        run_stage(to);
+        run_stage(to, path_);
     }
 }
 
@@ -384,17 +438,34 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
                            std::string& error, const CompositeTarget* elsewhere) {
     if (scene.width <= 0 || scene.height <= 0) return true;
     const int samples = effective_sample_count(settings);
-    if (gl_version_ == 0) gl_version_ = epoxy_gl_version();
-    const bool compute = settings.compute && gl_version_ >= 43 && !compute_refused_;
-    if (!build_programs(settings.mode, samples, compute, error)) {
-        // A driver that refuses the compute stages may still take the full-screen ones.
-        if (!compute) return false;
-        compute_refused_ = true;
-        error.clear();
-        if (!build_programs(settings.mode, samples, false, error)) return false;
-    }
     const int width = settings.half_resolution ? (scene.width + 1) / 2 : scene.width;
     const int height = settings.half_resolution ? (scene.height + 1) / 2 : scene.height;
+    if (gl_version_ == 0) gl_version_ = epoxy_gl_version();
+    const bool blurs = settings.blur && settings.mode != ObscuranceMode::reference;
+    int trial_frame = -1;
+    if (settings.compute == ComputeUse::off || gl_version_ < 43 || compute_refused_) {
+        path_ = StagePath::fragment;
+    } else if (settings.compute == ComputeUse::on) {
+        path_ = StagePath::compute;
+    } else {
+        trial_frame = choose_paths({settings.mode, samples, width, height, blurs});
+    }
+    if (!build_programs(settings.mode, samples, error)) {
+        // A driver that refuses the compute stages may still take the full-screen ones.
+        if (path_ == StagePath::fragment) return false;
+        compute_refused_ = true;
+        error.clear();
+        path_ = StagePath::fragment;
+        trial_frame = -1;
+        if (!build_programs(settings.mode, samples, error)) return false;
+    }
+    // A trial's first frame builds the other path's programs too, so that no later frame does.
+    if (trial_frame == 0) {
+        const StagePath other = StageTrial::path_of_frame(1);
+        if (!build_estimate(settings.mode, samples, other, error) || !build_blur(other, error)) {
+            return false;
+        }
+    }
     SavedState saved;
     if (!prepare_targets(width, height, error) ||
         (settings.mode == ObscuranceMode::area1 &&
@@ -411,18 +482,23 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
         build_moments(scene);
         mark_end();
     }
+    stamp(trial_frame, 0);
     mark_begin("vo_estimate");
     estimate(scene, settings, samples);
     mark_end();
-    if (settings.blur && settings.mode != ObscuranceMode::reference) {
+    stamp(trial_frame, 1);
+    if (blurs) {
         mark_begin("vo_blur");
         blur();
         mark_end();
     }
+    stamp(trial_frame, 2);
     mark_begin("vo_composite");
     composite(scene, settings, elsewhere);
     mark_end();
-    if (compute_) glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    if (path_ == StagePath::compute) {
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    }
     glBindVertexArray(0);
     glActiveTexture(GL_TEXTURE0);
     return true;

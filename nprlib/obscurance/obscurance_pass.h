@@ -12,6 +12,8 @@
 #include "gl/handles.h"
 #include "gl/program.h"
 #include "obscurance/obscurance_settings.h"
+#include "obscurance/stage_clock.h"
+#include "obscurance/stage_trial.h"
 
 namespace nq::npr::obscurance {
 
@@ -45,7 +47,8 @@ struct PassMarkers {
 
 class ObscurancePass {
   public:
-    explicit ObscurancePass(gl::ObjectTracker* tracker = nullptr) : tracker_(tracker) {}
+    explicit ObscurancePass(gl::ObjectTracker* tracker = nullptr)
+        : tracker_(tracker), clock_(tracker) {}
 
     void set_markers(const PassMarkers& markers) { markers_ = markers; }
 
@@ -57,9 +60,14 @@ class ObscurancePass {
     bool apply(const SceneTextures& scene, const ObscuranceSettings& settings, std::string& error,
                const CompositeTarget* elsewhere = nullptr);
 
-    // Whether the last apply ran the estimate and the blur as compute programs (vo_compute where
-    // the context has GL 4.3).
-    bool ran_compute() const { return compute_; }
+    // How the last apply ran the estimate and the blur (vo_compute; always fragment without
+    // GL 4.3).
+    StagePath ran() const { return path_; }
+    // vo_compute 2: the trial of the two paths (the present one, or the last decided), and how
+    // many trials have been decided (a new trial starts when the mode, the sample count, the
+    // resolution or the blur changes).
+    const StageTrial& trial() const { return trial_; }
+    int decisions() const { return decisions_; }
 
     // The last result (RGBA16F: open in red, 1 = open; then the texel's distance and normal
     // x, y for the blur), at the pass's resolution; 0 before the first apply.
@@ -84,17 +92,36 @@ class ObscurancePass {
     bool build(gl::Program& program, const gl::ProgramSource& source, std::string& error);
     bool build_fullscreen(gl::Program& program, const char* name, const std::string& fragment,
                           std::string& error);
+    // The estimate programs (one per mode) and the blur, built to run one way.
+    struct StagePrograms {
+        std::array<gl::Program, kObscuranceModes> estimate;
+        std::array<SampleTableKey, kObscuranceModes> uploaded{};  // per estimate program
+        gl::Program blur;
+    };
+    // What a trial of the two paths measured; another key, another trial.
+    struct TrialKey {
+        ObscuranceMode mode = ObscuranceMode::lines5;
+        int samples = 0, width = 0, height = 0;
+        bool blur = false;
+        bool operator==(const TrialKey&) const = default;
+    };
     bool build_stage(gl::Program& program, const char* name, const std::string& body,
-                     std::string& error);
-    bool build_programs(ObscuranceMode mode, int samples, bool compute, std::string& error);
-    void upload_samples(ObscuranceMode mode, SampleTableKey table);
+                     StagePath path, std::string& error);
+    bool build_estimate(ObscuranceMode mode, int samples, StagePath path, std::string& error);
+    bool build_blur(StagePath path, std::string& error);
+    bool build_shared(ObscuranceMode mode, std::string& error);
+    bool build_programs(ObscuranceMode mode, int samples, std::string& error);
+    int choose_paths(const TrialKey& key);
+    void read_trial();
+    void stamp(int trial_frame, int stamp);
+    void upload_samples(StagePrograms& programs, ObscuranceMode mode, SampleTableKey table);
     bool make_target(Target& target, GLenum format, int levels, int width, int height,
                      std::string& error);
     bool prepare_targets(int width, int height, std::string& error);
     bool prepare_moments(int width, int height, std::string& error);
     void build_moments(const SceneTextures& scene);
     void estimate(const SceneTextures& scene, const ObscuranceSettings& settings, int samples);
-    void run_stage(const Target& to);
+    void run_stage(const Target& to, StagePath path);
     void blur();
     void composite(const SceneTextures& scene, const ObscuranceSettings& settings,
                    const CompositeTarget* elsewhere);
@@ -109,11 +136,16 @@ class ObscurancePass {
     gl::ObjectTracker* tracker_;
     PassMarkers markers_;
     int gl_version_ = 0;            // the context's, e.g. 45; 0 until the first apply
-    bool compute_ = false;          // the estimates and the blur are built as compute programs
     bool compute_refused_ = false;  // a compute stage did not build: full-screen ones instead
-    std::array<gl::Program, kObscuranceModes> estimate_;
-    std::array<SampleTableKey, kObscuranceModes> uploaded_{};  // per estimate program
-    gl::Program blur_, composite_, moments_program_;
+    std::array<StagePrograms, 2> stages_;   // by StagePath
+    StagePath path_ = StagePath::fragment;  // this apply's
+    StageTrial trial_;
+    StageClock clock_;
+    TrialKey trial_key_;
+    int trial_issued_ = 0;  // trial frames run so far
+    int trial_read_ = 0;    // trial frames whose times have been read back
+    int decisions_ = 0;
+    gl::Program composite_, moments_program_;
     gl::VertexArray empty_vertex_array_;
     std::array<Target, 2> targets_;
     const gl::Texture* result_ = nullptr;

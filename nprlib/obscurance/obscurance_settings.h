@@ -28,6 +28,10 @@ std::string_view obscurance_mode_name(ObscuranceMode mode);
 bool samples_lines(ObscuranceMode mode);   // lines5, lines9
 bool samples_points(ObscuranceMode mode);  // points12, points33
 
+// vo_compute 0, 1, 2: the estimate and the blur over full-screen triangles, as compute
+// programs, or each the way a short trial measures to be faster on this GPU (stage_trial.h).
+enum class ComputeUse { off, on, fastest };
+
 // How two radii combine (vo_radius2 > 0): their obscurances multiplied, or the smaller taken.
 enum class DualRadius { product, minimum };
 
@@ -42,9 +46,9 @@ struct ObscuranceSettings {
     bool normal_clamp = true;  // the tangent plane bounds each sample (flat surfaces stay open)
     bool blur = true;          // edge-aware (depth and normal) bilateral blur
     bool half_resolution = false;
-    // vo_compute: the estimate and the blur as compute shaders where the context has them
-    // (GL 4.3), else over full-screen triangles (the same result).
-    bool compute = true;
+    // vo_compute: how the estimate and the blur run where the context has compute shaders
+    // (GL 4.3; else always over full-screen triangles). The same result every way.
+    ComputeUse compute = ComputeUse::fastest;
     bool show = false;  // vo_show: the obscurance alone, in grey
     // vo_sample_set: whose line and point tables the estimate uses (sample_tables.h); the
     // paper's electrostatic sets by default, the others for the error comparison.

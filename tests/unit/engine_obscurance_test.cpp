@@ -73,8 +73,12 @@ TEST(ObscuranceCvars, ValuesReachTheSettingsAndABadModeWarns) {
     EXPECT_EQ(s.radius2, 64.0f);
     EXPECT_EQ(s.dual, npr::obscurance::DualRadius::minimum);
     EXPECT_TRUE(s.half_resolution);
-    EXPECT_FALSE(s.compute);
+    EXPECT_EQ(s.compute, npr::obscurance::ComputeUse::off);
     EXPECT_TRUE(warnings.empty());
+    registry.set("vo_compute", "1");
+    EXPECT_EQ(cvars.settings().compute, npr::obscurance::ComputeUse::on);
+    registry.set("vo_compute", "2");
+    EXPECT_EQ(cvars.settings().compute, npr::obscurance::ComputeUse::fastest);
     registry.set("vo_mode", "area7");
     s = cvars.settings();
     EXPECT_EQ(s.mode, ObscuranceMode::lines5);

@@ -25,6 +25,9 @@ namespace {
 using obscurance::ObscuranceMode;
 using obscurance::ObscurancePass;
 using obscurance::ObscuranceSettings;
+using obscurance::StagePath;
+using obscurance::StageTrial;
+using obscurance::TimedStage;
 
 constexpr float kNear = 4.0f, kFar = 4096.0f;
 
@@ -606,12 +609,12 @@ TEST_F(ObscurancePassTest, ComputeAndFragmentStagesGiveTheSamePicture) {
             ObscuranceSettings s = settings_for(mode);
             s.blur = true;
             s.half_resolution = half;
-            s.compute = false;
+            s.compute = obscurance::ComputeUse::off;
             const std::vector<float> fragment = run(s, side);
-            EXPECT_FALSE(pass_.ran_compute());
-            s.compute = true;
+            EXPECT_EQ(pass_.ran(), StagePath::fragment);
+            s.compute = obscurance::ComputeUse::on;
             const std::vector<float> compute = run(s, side);
-            EXPECT_TRUE(pass_.ran_compute());
+            EXPECT_EQ(pass_.ran(), StagePath::compute);
             float worst = 0.0f, darkest = 1.0f;
             for (size_t i = 0; i < compute.size(); ++i) {
                 worst = std::max(worst, std::abs(compute[i] - fragment[i]));
@@ -623,6 +626,51 @@ TEST_F(ObscurancePassTest, ComputeAndFragmentStagesGiveTheSamePicture) {
             EXPECT_LT(darkest, 0.9f) << obscurance::obscurance_mode_name(mode) << half;
         }
     }
+}
+
+// vo_compute 2: a trial runs both ways in turn (compute first) and then keeps the one whose
+// median GPU time (estimate and blur) was lower; the picture is the same in every frame,
+// whichever way it took. Another mode starts another trial.
+TEST_F(ObscurancePassTest, TheFasterWayIsChosenAndThePictureStaysTheSame) {
+    build_scene({kFloor, kWall});
+    ObscuranceSettings s = settings_for(ObscuranceMode::lines5);
+    s.blur = true;
+    s.compute = obscurance::ComputeUse::off;
+    const std::vector<float> expected = run(s);
+    s.compute = obscurance::ComputeUse::fastest;
+    for (ObscuranceMode mode : {ObscuranceMode::lines5, ObscuranceMode::points12}) {
+        s.mode = mode;
+        const int decisions = pass_.decisions();
+        // run reads the picture back, so a trial frame's times are there by the next frame.
+        int frames = 0;
+        while (frames < StageTrial::kFrames + 4) {
+            const int frame = frames++;
+            const std::vector<float> drawn = run(s);
+            if (mode == ObscuranceMode::lines5) {
+                float worst = 0.0f;
+                for (size_t i = 0; i < drawn.size(); ++i) {
+                    worst = std::max(worst, std::abs(drawn[i] - expected[i]));
+                }
+                EXPECT_LE(worst, 1.5f / 255.0f) << "frame " << frame;
+            }
+            if (frame < StageTrial::kFrames) {
+                EXPECT_EQ(pass_.ran(), StageTrial::path_of_frame(frame));
+            }
+            if (pass_.trial().decided()) break;
+        }
+        ASSERT_TRUE(pass_.trial().decided()) << obscurance::obscurance_mode_name(mode);
+        EXPECT_EQ(pass_.decisions(), decisions + 1);
+        EXPECT_GT(frames, StageTrial::kFrames);  // decided in the frame after the last trial one
+        run(s);
+        for (TimedStage stage : {TimedStage::estimate, TimedStage::blur}) {
+            EXPECT_GT(pass_.trial().median(stage, StagePath::fragment), 0u);
+            EXPECT_GT(pass_.trial().median(stage, StagePath::compute), 0u);
+        }
+        const uint64_t fragment = pass_.trial().median(StagePath::fragment);
+        const uint64_t compute = pass_.trial().median(StagePath::compute);
+        EXPECT_EQ(pass_.ran(), fragment < compute ? StagePath::fragment : StagePath::compute);
+    }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 // The stage markers (the engine's per-stage timer queries) open and close around each stage
