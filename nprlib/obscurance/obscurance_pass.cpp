@@ -188,11 +188,7 @@ bool ObscurancePass::build_programs(ObscuranceMode mode, int samples, std::strin
 
 // vo_compute 2: this frame's way from the trial for `key` (a new trial when the key changes),
 // and the trial frame it runs (-1 when it runs none: decided, or waiting for the last times).
-int ObscurancePass::choose_paths(const TrialKey& key) {
-    if (!StageClock::supported()) {
-        path_ = StagePath::compute;
-        return -1;
-    }
+int ObscurancePass::choose_path(const TrialKey& key) {
     if (!(key == trial_key_)) {
         trial_.restart();
         trial_key_ = key;
@@ -448,7 +444,7 @@ bool ObscurancePass::apply(const SceneTextures& scene, const ObscuranceSettings&
     } else if (settings.compute == ComputeUse::on) {
         path_ = StagePath::compute;
     } else {
-        trial_frame = choose_paths({settings.mode, samples, width, height, blurs});
+        trial_frame = choose_path({settings.mode, samples, width, height, blurs});
     }
     if (!build_programs(settings.mode, samples, error)) {
         // A driver that refuses the compute stages may still take the full-screen ones.

@@ -4,6 +4,8 @@
 // alone). Style-independent: the engine runs it after any plugin's scene passes, before the
 // HUD. The sample sets are the committed electrostatic tables (sample_tables.h); area1 first
 // builds a mip chain of depth moments; the reference mode is neither randomised nor blurred.
+// The estimate and the blur run as compute programs or over full-screen triangles, or the way
+// a short trial measures faster on this GPU (vo_compute; stage_trial.h, stage_clock.h).
 #pragma once
 
 #include <array>
@@ -111,7 +113,7 @@ class ObscurancePass {
     bool build_blur(StagePath path, std::string& error);
     bool build_shared(ObscuranceMode mode, std::string& error);
     bool build_programs(ObscuranceMode mode, int samples, std::string& error);
-    int choose_paths(const TrialKey& key);
+    int choose_path(const TrialKey& key);
     void read_trial();
     void stamp(int trial_frame, int stamp);
     void upload_samples(StagePrograms& programs, ObscuranceMode mode, SampleTableKey table);

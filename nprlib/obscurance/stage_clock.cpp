@@ -4,10 +4,6 @@
 
 namespace nq::npr::obscurance {
 
-bool StageClock::supported() {
-    return epoxy_gl_version() >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query");
-}
-
 void StageClock::stamp(int frame, int stamp) {
     if (frame < 0 || frame >= StageTrial::kFrames || stamp < 0 || stamp >= kStamps) return;
     gl::Query& query = queries_[size_t(frame)][size_t(stamp)];

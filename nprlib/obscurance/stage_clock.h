@@ -1,5 +1,6 @@
 // GPU timestamps around the obscurance pass's estimate and blur in each frame of a StageTrial
-// (stage_trial.h), read back a few frames later, never waiting for the GPU.
+// (stage_trial.h), read back a few frames later, never waiting for the GPU. Timestamp queries
+// are core OpenGL since 3.3; the trial runs only where compute shaders are (4.3).
 #pragma once
 
 #include <array>
@@ -16,10 +17,6 @@ class StageClock {
     static constexpr int kStamps = kTimedStages + 1;
 
     explicit StageClock(gl::ObjectTracker* tracker = nullptr) : tracker_(tracker) {}
-
-    // Whether the context has timestamp queries (OpenGL 3.3 or ARB_timer_query); with a
-    // context current.
-    static bool supported();
 
     // Stamp `stamp` (0 .. kStamps - 1) of trial frame `frame`: taken when the GPU gets there.
     void stamp(int frame, int stamp);

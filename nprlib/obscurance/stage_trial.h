@@ -26,8 +26,8 @@ inline constexpr int kTimedStages = 2;
 
 class StageTrial {
   public:
-    static constexpr int kWarmUpFrames = 2;  // per way, not counted
-    static constexpr int kKeptFrames = 5;    // per way, counted (odd: a true median)
+    static constexpr int kWarmUpFrames = 3;  // per way, not counted
+    static constexpr int kKeptFrames = 7;    // per way, counted (odd: a true median)
     static constexpr int kFrames = 2 * (kWarmUpFrames + kKeptFrames);
 
     // Forgets what was measured: the next frames are the trial's again.
