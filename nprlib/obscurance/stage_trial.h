@@ -1,9 +1,9 @@
 // vo_compute 2: which of two ways to run the pass's heavy stages (the estimate and the blur) is
 // faster on this GPU, measured rather than guessed. The same shader code runs as compute
 // programs or over full-screen triangles with the same result (a test compares them), but
-// which is faster differs by far between machines: Mesa's llvmpipe draws the estimate in half
-// the time as a fragment shader, while a data-centre GPU that keeps graphics to a few of its
-// cores should favour compute.
+// which is faster differs between machines: Mesa's llvmpipe draws the estimate in 0.6x the
+// time as a fragment shader, while a data-centre GPU that keeps graphics to a few of its cores
+// should favour compute.
 //
 // A trial alternates the two ways frame by frame (A, B, A, B: a GPU's clock drifts), drops
 // each way's first frames (compiling, caches), and keeps the way whose median of the estimate
