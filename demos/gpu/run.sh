@@ -47,6 +47,8 @@ BUILD=$root/.gpu/build NPRQ_DATA=$root/.gpu/data PYTHON=python3 timeout "${VO_BU
 echo "bench rc=$? after $(( $(date +%s) - start )) s"
 cp /tmp/vo/cost.tsv /tmp/vo/renderer.txt "$OUT/" 2>/dev/null
 python3 demos/obscurance_cost.py /tmp/vo/cost.tsv > "$OUT/cost.md" 2>&1; cat "$OUT/cost.md"
+# What vo_compute 2's trial measured and chose in each lines5_*fastest run.
+grep -H "vo_compute 2" /tmp/vo/logs/*fastest* > "$OUT/trial.txt" 2>&1; cat "$OUT/trial.txt"
 # The styles on the GPU, if time is left: classic, technical, illustrative, with and without vo.
 styles=/tmp/styles.log; : > $styles
 for round in 1 2; do for p in classic technical illustrative; do for vo in 0 1; do
