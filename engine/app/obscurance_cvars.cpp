@@ -60,7 +60,7 @@ void ObscuranceCvars::register_cvars(CvarRegistry& cvars,
     const std::string compute_default = std::to_string(static_cast<int>(d.compute));
     cvars_[compute] = number("vo_compute", compute_default.c_str(), 0.0f, 2.0f,
                              "estimate and blur: 0 full-screen triangles, 1 compute shaders "
-                             "(GL 4.3), 2 each the way a short trial measures faster");
+                             "(GL 4.3), 2 the way a short trial measures faster");
     read();
 }
 
