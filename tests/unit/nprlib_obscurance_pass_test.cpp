@@ -210,6 +210,15 @@ class ObscurancePassTest : public GlSuiteTest<ObscurancePassTest> {
         return s;
     }
 
+    // For build_foreground_edge: a sphere large enough (48) that the near wall reaches into the
+    // far wall's spheres beside the silhouette, with `thickness`.
+    static ObscuranceSettings edge_settings(ObscuranceMode mode, float thickness) {
+        ObscuranceSettings s = settings_for(mode);
+        s.radius = 48.0f;
+        s.thickness = thickness;
+        return s;
+    }
+
     gl::ObjectTracker tracker_;
     ObscurancePass pass_{&tracker_};
     glm::mat4 projection_;
@@ -308,9 +317,7 @@ TEST_F(ObscurancePassTest, TheCreaseIsDarkenedByTheVolumeTheWallCutsOff) {
 TEST_F(ObscurancePassTest, AForegroundEdgeLeavesNoHaloBehindItWithAThickness) {
     build_foreground_edge();
     for (ObscuranceMode mode : kModes) {
-        ObscuranceSettings s = settings_for(mode);
-        s.radius = 48.0f;
-        s.thickness = 32.0f;
+        ObscuranceSettings s = edge_settings(mode, 32.0f);
         s.blur = true;
         const std::vector<float> with_thickness = run(s);
         s.thickness = 0.0f;
@@ -329,9 +336,7 @@ TEST_F(ObscurancePassTest, AForegroundEdgeLeavesNoHaloBehindItWithAThickness) {
 TEST_F(ObscurancePassTest, HalfResolutionUpsamplesWithoutBleedingAcrossTheEdge) {
     build_foreground_edge();
     for (ObscuranceMode mode : kModes) {
-        ObscuranceSettings s = settings_for(mode);
-        s.radius = 48.0f;
-        s.thickness = 0.0f;
+        ObscuranceSettings s = edge_settings(mode, 0.0f);
         s.half_resolution = true;
         for (bool blur : {false, true}) {
             s.blur = blur && mode != ObscuranceMode::reference;
