@@ -10,12 +10,12 @@
 #          (timedemo's "gpu obscurance" and "gpu vo_*" lines: moments, estimate, blur,
 #          composite).
 #   error  the same paused demo.dem frames with `vo_show 1` in every mode (the sampled ones also
-#          with Poisson-disk and Lloyd sets, vo_sample_set; and electrostatic sets of the
-#          neighbouring counts, vo_sample_count) and in `reference` (64 x 64
-#          stratified lines, not randomised or blurred), then a stretch of consecutive frames
-#          for flicker; at the stills the frame's geometry too (vo_dump_scene), ray-traced by
-#          vo_reference (Embree); demos/obscurance_error.py computes RMSE and SSIM against both
-#          references, and flicker.
+#          with Poisson-disk and Lloyd sets, vo_sample_set; turned per pixel only, as the paper,
+#          vo_shift 0; and electrostatic sets of the neighbouring counts, vo_sample_count) and
+#          in `reference` (64 x 64 stratified lines, not randomised or blurred), then a stretch
+#          of consecutive frames for flicker; at the stills the frame's geometry too
+#          (vo_dump_scene), ray-traced by vo_reference (Embree); demos/obscurance_error.py
+#          computes RMSE and SSIM against both references, and flicker.
 #
 # usage: demos/bench_obscurance.sh [--res "640x480 1024x768"] [--rounds N] [--skip-cost]
 #                                  [--skip-error] [--out DIR]  (default build/bench_obscurance)
@@ -52,7 +52,7 @@ done
 [ -d "$data/lq1" ] || { echo "bench_obscurance.sh: no game data at $data/lq1" >&2; exit 1; }
 mkdir -p "$out/logs" "$out/shots" "$out/scenes"
 defaults="+vo_radius 24 +vo_radius2 0 +vo_dual_min 0 +vo_thickness 32 +vo_strength 1 \
-+vo_normal 1 +vo_show 0 +vo_compute 1"
++vo_normal 1 +vo_show 0 +vo_compute 1 +vo_shift 1"
 
 run_engine() {  # width height log args...
     local width=$1 height=$2 log=$3 user
@@ -124,6 +124,11 @@ if [ "$error" = 1 ]; then
     for m in lines5 lines9 points12 points33 area1; do
         shots+=("$m|vo_mode $m; vo_sample_set electrostatic; vo_sample_count 0")
     done
+    # The paper's per-pixel pattern: the set turned (and mirrored), not shifted (vo_shift 0;
+    # every shot starts from vo_shift 1, the default).
+    for m in lines5 lines9 points12 points33; do
+        shots+=("${m}_turned|vo_mode $m; vo_sample_set electrostatic; vo_sample_count 0; vo_shift 0")
+    done
     for m in lines5 lines9 points12 points33; do
         for set in poisson lloyd; do
             shots+=("${m}_$set|vo_mode $m; vo_sample_set $set; vo_sample_count 0")
@@ -142,7 +147,7 @@ if [ "$error" = 1 ]; then
     frame_commands() {  # frame -> the commands that shoot every configuration there
         local f=$1 entry commands="pause 1; vo_enable 1; vo_show 1"
         for entry in "${shots[@]}"; do
-            commands+="; ${entry#*|}; wait; wait; screenshot $out/shots/${entry%%|*}_$f.png"
+            commands+="; vo_shift 1; ${entry#*|}; wait; wait; screenshot $out/shots/${entry%%|*}_$f.png"
         done
         # The geometry of a still, for the ray-traced reference (written at the next frame drawn).
         case " $stills " in *" $f "*) commands+="; vo_dump_scene $out/scenes/$f.bin; wait; wait" ;; esac

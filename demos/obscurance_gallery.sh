@@ -16,7 +16,7 @@ source "$(dirname "$0")/gallery_lib.sh"
 
 # The cvar defaults, written out so a user's config cannot leak in.
 defaults="vo_enable 1; vo_mode lines5; vo_radius 24; vo_radius2 0; vo_dual_min 0; vo_thickness 32;
-vo_strength 1; vo_normal 1; vo_blur 1; vo_half 0; vo_show 0"
+vo_strength 1; vo_normal 1; vo_shift 1; vo_blur 1; vo_half 0; vo_show 0"
 
 settings=(
     "off|vo_enable 0"
@@ -32,6 +32,7 @@ settings=(
     "dual_min|vo_show 1; vo_radius2 96; vo_dual_min 1"
     "thickness_0|vo_show 1; vo_thickness 0"
     "normal_off|vo_show 1; vo_normal 0"
+    "shift_off|vo_show 1; vo_shift 0"
     "blur_off|vo_show 1; vo_blur 0"
     "half|vo_show 1; vo_half 1"
 )
@@ -45,6 +46,6 @@ group effect "obscurance off, on, strength 0.5, alone" off on half_strength show
 group modes "lines5 (default), lines9, points12, points33 (alone)" show lines9 points12 points33
 group radius "radius 12, 24 (default), 48; radii 24 and 96 by product, by minimum" radius_12 \
     show radius_48 dual_24_96 dual_min
-group options "default, thickness 0 (infinite), no normal clamp, no blur, half resolution" show \
-    thickness_0 normal_off blur_off half
+group options "default, samples turned only (vo_shift 0), thickness 0 (infinite), no normal clamp, \
+no blur, half resolution" show shift_off thickness_0 normal_off blur_off half
 echo "obscurance_gallery.sh: pictures in $out"

@@ -42,6 +42,9 @@ void ObscuranceCvars::register_cvars(CvarRegistry& cvars,
     cvars_[strength] = number("vo_strength", "1", 0.0f, 1.0f, "0 = no darkening, 1 = all of it");
     cvars_[normal] =
         flag("vo_normal", d.normal_clamp, "clamp each sample by the surface's tangent plane");
+    cvars_[shift] = flag("vo_shift", d.shift,
+                         "per-pixel pattern: 1 turns and shifts the samples (every radius), 0 "
+                         "only turns them (the paper)");
     cvars_[blur] = flag("vo_blur", d.blur, "edge-aware (depth and normal) blur");
     cvars_[half] = flag("vo_half", d.half_resolution, "compute at half resolution");
     cvars_[show] =
@@ -97,6 +100,7 @@ void ObscuranceCvars::read() {
     s.thickness = cvars_[thickness]->value();
     s.strength = cvars_[strength]->value();
     s.normal_clamp = cvars_[normal]->value() != 0.0f;
+    s.shift = cvars_[shift]->value() != 0.0f;
     s.blur = cvars_[blur]->value() != 0.0f;
     s.half_resolution = cvars_[half]->value() != 0.0f;
     s.show = cvars_[show]->value() != 0.0f;

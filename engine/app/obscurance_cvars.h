@@ -36,6 +36,7 @@ class ObscuranceCvars {
         sample_set,
         sample_count,
         compute,
+        shift,
         count
     };
     void read();

@@ -50,13 +50,26 @@ uniform vec2 u_radii;       // R and the second radius (0 = none)
 uniform int u_dual_minimum;
 uniform float u_thickness;  // 0 = infinitely thick
 uniform int u_normal_clamp;
+uniform int u_shift;  // vo_shift: the pixel's pattern shifts the samples as well as turning them
+// How a pixel turns, mirrors and shifts the sample set (pixel_pattern, below).
+struct Pattern {
+    mat2 rotation;
+    float reflection;  // 1, or -1 to mirror the set
+    vec2 shift;        // in [0, 1): through the volume's share (x) and, for points, height (y)
+};
 #if defined(VO_LINES)
 #define VO_COUNT VO_LINES
 // x, y on the unit disk, sqrt(1 - x^2 - y^2), Voronoi weight / (2 sqrt(1 - x^2 - y^2))
 uniform vec4 u_samples[VO_COUNT];
+// For the shift: the unit direction of x, y (any for the centre), the share of the sphere's
+// volume in the columns nearer the centre, 1 - (1 - r^2)^(3/2), and half the weight.
+uniform vec4 u_polar[VO_COUNT];
 #elif defined(VO_POINTS)
 #define VO_COUNT VO_POINTS
 uniform vec4 u_samples[VO_COUNT];  // x, y, z in the unit ball, weight
+// For the shift: the unit direction of x, y (any on the axis), the share of the ball's volume
+// nearer the centre (r^3), and the height z / r on the unit sphere.
+uniform vec4 u_polar[VO_COUNT];
 #elif defined(VO_AREA)
 uniform sampler2D u_moments;  // (distance, distance^2) of the depth buffer, mipmapped
 uniform vec2 u_moments_scale;  // scene size / the moments texture's (padded) size
@@ -98,22 +111,41 @@ float line_result(float open_sum, float available_sum, float volume_sum) {
 #endif
 
 #if defined(VO_LINES)
-float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
+// Line i where the pattern puts it: s on the unit disk, its column's half-length and its
+// weight per unit of length. Shifted, the volume's share v moves round [0, 1) and the radius
+// follows: 1 - r^2 = (1 - v)^(2/3), so the column is (1 - v)^(1/3) long. Every line is then
+// equally likely anywhere in the sphere's volume, whatever the set.
+void line_sample(int i, Pattern pattern, out vec2 s, out float column, out float per_length) {
+    if (u_shift == 0) {
+        s = pattern.rotation * vec2(u_samples[i].x * pattern.reflection, u_samples[i].y);
+        column = u_samples[i].z;
+        per_length = u_samples[i].w;
+        return;
+    }
+    float v = fract(u_polar[i].z + pattern.shift.x);
+    column = max(pow(1.0 - v, 1.0 / 3.0), 1e-2);
+    float r = sqrt(max(1.0 - column * column, 0.0));
+    s = pattern.rotation * (r * vec2(u_polar[i].x * pattern.reflection, u_polar[i].y));
+    per_length = u_polar[i].w / column;
+}
+float open_fraction(vec3 p, vec3 n, float radius, Pattern pattern) {
     float open_sum = 0.0, available_sum = 0.0;
     for (int i = 0; i < VO_COUNT; ++i) {
-        vec2 s = rotation * vec2(u_samples[i].x * reflection, u_samples[i].y);
+        vec2 s;
+        float column, per_length;
+        line_sample(i, pattern, s, column, per_length);
         float open_len, available;
-        line_lengths(p, n, radius, s, u_samples[i].z, open_len, available);
+        line_lengths(p, n, radius, s, column, open_len, available);
         // Each line stands for its Voronoi region's volume: weight per unit of its length.
-        open_sum += u_samples[i].w * open_len;
-        available_sum += u_samples[i].w * available;
+        open_sum += per_length * open_len;
+        available_sum += per_length * available;
     }
     return line_result(open_sum / radius, available_sum / radius, 1.0);
 }
 #elif defined(VO_REFERENCE)
 // VO_REFERENCE x VO_REFERENCE cells over the disk's square, one line through each centre
 // inside the disk: every line stands for the same area, so its length is its volume.
-float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
+float open_fraction(vec3 p, vec3 n, float radius, Pattern pattern) {
     float open_sum = 0.0, available_sum = 0.0, volume_sum = 0.0;
     for (int j = 0; j < VO_REFERENCE; ++j) {
         for (int i = 0; i < VO_REFERENCE; ++i) {
@@ -130,13 +162,25 @@ float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflectio
     return line_result(open_sum, available_sum, volume_sum);
 }
 #elif defined(VO_POINTS)
-float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
+// Point i where the pattern puts it. Shifted, its volume's share r^3 and its height h = z / r
+// move round their ranges and the turn carries its azimuth: uniform in all three is uniform in
+// the ball, so every point is equally likely anywhere in it, whatever the set.
+vec3 point_sample(int i, Pattern pattern) {
+    if (u_shift == 0) {
+        return vec3(pattern.rotation * u_samples[i].xy, u_samples[i].z * pattern.reflection);
+    }
+    float r = pow(fract(u_polar[i].z + pattern.shift.x), 1.0 / 3.0);
+    float h = fract(0.5 * u_polar[i].w + 0.5 + pattern.shift.y) * 2.0 - 1.0;
+    vec2 xy = sqrt(max(1.0 - h * h, 0.0)) * (pattern.rotation * u_polar[i].xy);
+    return r * vec3(xy, h * pattern.reflection);
+}
+float open_fraction(vec3 p, vec3 n, float radius, Pattern pattern) {
     float open_sum = 0.0;
     // Points on the tangent plane of a flat surface stay open, also where a texel's depth
     // spans a long stretch of a surface seen at a grazing angle.
     float bias = 0.02 * radius + 0.004 * -p.z;
     for (int i = 0; i < VO_COUNT; ++i) {
-        vec3 s = vec3(rotation * u_samples[i].xy, u_samples[i].z * reflection);
+        vec3 s = point_sample(i, pattern);
         if (u_normal_clamp != 0 && dot(s, n) < 0.0) s = -s;
         vec3 x = p + radius * s;
         float behind = -x.z - scene_distance(scene_texel(project(x)));
@@ -218,7 +262,7 @@ float level_open(vec3 p, vec3 n, vec2 uv, float level, float radius) {
 // scene fills above the tangent plane is what it fills beyond the plane's own share over the
 // same footprint (f_plane - f_scene of f_plane), so a flat surface, tilted or not, is fully
 // open and a wall beside it darkens it by what it adds.
-float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflection) {
+float open_fraction(vec3 p, vec3 n, float radius, Pattern pattern) {
     float radius_texels = radius * u_projection.x / -p.z * 0.5 * float(u_scene_size.x);
     float lod = clamp(log2(radius_texels), 0.0, float(VO_MOMENTS_LEVELS - 1));
     float level = floor(lod);
@@ -232,21 +276,33 @@ float open_fraction(vec3 p, vec3 n, float radius, mat2 rotation, float reflectio
 // A 4x4 ordered (Bayer) pattern of 16 rotations, every other one reflected. The rotations
 // spread over the sample set's own symmetry period (2 pi / k for a set that k-fold rotation
 // maps onto itself), or a symmetric set would repeat itself: the 9 electrostatic lines (a ring
-// of 8 and the centre) turned in steps of 22.5 degrees take only 2 distinct positions.
+// of 8 and the centre) turned in steps of 22.5 degrees take only 2 distinct positions. The
+// shifts make the 16 cells a Hammersley set with the turn: cell k's shift is k's 4 bits
+// reversed (and, for a point's height, k's base-3 digits reversed), so every quarter of the
+// turn's range meets every quarter of the shift's.
 uniform float u_rotation_span;
 const int kBayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
-void pixel_pattern(ivec2 pixel, out mat2 rotation, out float reflection) {
+float radical_inverse(int k, int base) {
+    float inverse = 0.0, digit = 1.0 / float(base);
+    for (; k > 0; k /= base, digit /= float(base)) inverse += float(k % base) * digit;
+    return inverse;
+}
+Pattern pixel_pattern(ivec2 pixel) {
+    Pattern pattern;
 #ifdef VO_REFERENCE
-    rotation = mat2(1.0);  // the reference is not randomised
-    reflection = 1.0;
+    pattern.rotation = mat2(1.0);  // the reference is not randomised
+    pattern.reflection = 1.0;
+    pattern.shift = vec2(0.0);
 #else
     ivec2 q = pixel & 3;
     int bayer = kBayer[q.y * 4 + q.x];
     float angle = (float(bayer) + 0.5) * (u_rotation_span / 16.0);
     float c = cos(angle), s = sin(angle);
-    rotation = mat2(c, s, -s, c);
-    reflection = (bayer & 1) == 0 ? 1.0 : -1.0;
+    pattern.rotation = mat2(c, s, -s, c);
+    pattern.reflection = (bayer & 1) == 0 ? 1.0 : -1.0;
+    pattern.shift = vec2(radical_inverse(bayer, 2), radical_inverse(bayer, 3));
 #endif
+    return pattern;
 }
 
 // The result with what the blur needs of the texel, so that it reads one texture per tap:
@@ -263,12 +319,10 @@ vec4 pass_result(ivec2 pixel) {
     float radius_pixels = u_radii.x * u_projection.x / distance * 0.5 * float(u_scene_size.x);
     if (radius_pixels < 1.0) return result;
     vec3 p = view_position(uv, distance);
-    mat2 rotation;
-    float reflection;
-    pixel_pattern(pixel, rotation, reflection);
-    float open = open_fraction(p, n, u_radii.x, rotation, reflection);
+    Pattern pattern = pixel_pattern(pixel);
+    float open = open_fraction(p, n, u_radii.x, pattern);
     if (u_radii.y > 0.0) {
-        float second = open_fraction(p, n, u_radii.y, rotation, reflection);
+        float second = open_fraction(p, n, u_radii.y, pattern);
         open = u_dual_minimum != 0 ? min(open, second) : open * second;
     }
     result.x = open;

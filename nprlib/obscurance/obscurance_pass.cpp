@@ -2,6 +2,10 @@
 
 #include <epoxy/gl.h>
 
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -221,8 +225,14 @@ void ObscurancePass::stamp(int trial_frame, int stamp) {
     if (trial_frame >= 0) clock_.stamp(trial_frame, stamp);
 }
 
-// The largest k <= 12 such that turning the set by 2 pi / k about the view axis maps every
-// sample onto one of the set (within 0.02): its rotational symmetry order, 1 for none.
+namespace {
+
+// The unit direction of (x, y); (1, 0) at the centre, where any does.
+glm::vec2 unit_or_x(float x, float y) {
+    const float length = std::sqrt(x * x + y * y);
+    return length > 1e-6f ? glm::vec2(x, y) / length : glm::vec2(1.0f, 0.0f);
+}
+
 template <class Row>
 float height_of(const Row& row) {
     if constexpr (requires { row.z; }) {
@@ -232,6 +242,8 @@ float height_of(const Row& row) {
     }
 }
 
+// The largest k <= 12 such that turning the set by 2 pi / k about the view axis maps every
+// sample onto one of the set (within 0.02): its rotational symmetry order, 1 for none.
 template <class Row>
 int symmetry_order(std::span<const Row> rows) {
     for (int k = 12; k > 1; --k) {
@@ -250,6 +262,8 @@ int symmetry_order(std::span<const Row> rows) {
     return 1;
 }
 
+}  // namespace
+
 // The sample table of a lines or points mode, into its estimate program (in use), with the
 // span its per-pixel rotations cover.
 void ObscurancePass::upload_samples(StagePrograms& programs, ObscuranceMode mode,
@@ -263,20 +277,35 @@ void ObscurancePass::upload_samples(StagePrograms& programs, ObscuranceMode mode
         const auto rows = line_sample_table(method, table.count);
         if (rows.empty()) return;  // effective_sample_count only asks for tables that exist
         // What rotating a sample keeps: its column's half-length on the unit sphere and its
-        // weight per unit of that length.
-        std::array<float, 4 * kMaxLineSamples> lines{};
+        // weight per unit of that length; for shifting it, where it lies in the volume.
+        std::array<float, 4 * kMaxLineSamples> lines{}, polar{};
         for (size_t i = 0; i < rows.size() && i < size_t(kMaxLineSamples); ++i) {
-            const float column =
-                std::sqrt(std::max(1.0f - rows[i].x * rows[i].x - rows[i].y * rows[i].y, 1e-4f));
+            const float r2 = std::min(rows[i].x * rows[i].x + rows[i].y * rows[i].y, 1.0f);
+            const float column = std::sqrt(std::max(1.0f - r2, 1e-4f));
             const float values[] = {rows[i].x, rows[i].y, column, rows[i].weight / (2.0f * column)};
             std::copy(values, values + 4, lines.begin() + std::ptrdiff_t(4 * i));
+            const glm::vec2 direction = unit_or_x(rows[i].x, rows[i].y);
+            const float share = 1.0f - (1.0f - r2) * std::sqrt(1.0f - r2);
+            const float shifted[] = {direction.x, direction.y, share, 0.5f * rows[i].weight};
+            std::copy(shifted, shifted + 4, polar.begin() + std::ptrdiff_t(4 * i));
         }
         glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), lines.data());
+        glUniform4fv(estimate.location("u_polar"), GLsizei(rows.size()), polar.data());
         span = kFullTurn / float(symmetry_order(rows));
     } else if (samples_points(mode)) {
         const auto rows = point_sample_table(method, table.count);
         if (rows.empty()) return;
         glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
+        std::array<float, 4 * kMaxPointSamples> polar{};
+        for (size_t i = 0; i < rows.size() && i < size_t(kMaxPointSamples); ++i) {
+            const glm::vec3 p(rows[i].x, rows[i].y, rows[i].z);
+            const float r = std::min(glm::length(p), 1.0f);
+            const glm::vec2 direction = unit_or_x(p.x, p.y);
+            const float shifted[] = {direction.x, direction.y, r * r * r,
+                                     r > 1e-6f ? std::clamp(p.z / r, -1.0f, 1.0f) : 0.0f};
+            std::copy(shifted, shifted + 4, polar.begin() + std::ptrdiff_t(4 * i));
+        }
+        glUniform4fv(estimate.location("u_polar"), GLsizei(rows.size()), polar.data());
         span = kFullTurn / float(symmetry_order(rows));
     }
     glUniform1f(estimate.location("u_rotation_span"), span);
@@ -365,6 +394,7 @@ void ObscurancePass::estimate(const SceneTextures& scene, const ObscuranceSettin
     glUniform1i(program.location("u_dual_minimum"), settings.dual == DualRadius::minimum);
     glUniform1f(program.location("u_thickness"), settings.thickness);
     glUniform1i(program.location("u_normal_clamp"), settings.normal_clamp ? 1 : 0);
+    glUniform1i(program.location("u_shift"), settings.shift ? 1 : 0);
     if (settings.mode == ObscuranceMode::area1) set_moments_scale(program, scene);
     glUniform2i(program.location("u_target_size"), target_width_, target_height_);
     run_stage(targets_[0], path_);

@@ -44,7 +44,12 @@ struct ObscuranceSettings {
     float thickness = 32.0f;   // occluders are this thick (0 = infinitely: halos behind edges)
     float strength = 1.0f;     // 0 = no effect, 1 = the obscurance as measured
     bool normal_clamp = true;  // the tangent plane bounds each sample (flat surfaces stay open)
-    bool blur = true;          // edge-aware (depth and normal) bilateral blur
+    // vo_shift: the per-pixel pattern also shifts every sample through the sphere's volume
+    // (a Cranley-Patterson shift in coordinates that keep volume), not only turns the set, so
+    // a ring of samples reaches every radius and the blurred estimate has no bias from where
+    // the set's samples happen to lie.
+    bool shift = true;
+    bool blur = true;  // edge-aware (depth and normal) bilateral blur
     bool half_resolution = false;
     // vo_compute: how the estimate and the blur run where the context has compute shaders
     // (GL 4.3; else always over full-screen triangles). The same result every way.

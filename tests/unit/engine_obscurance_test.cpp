@@ -22,9 +22,9 @@ namespace {
 using npr::obscurance::ObscuranceMode;
 using npr::obscurance::ObscuranceSettings;
 
-const char* const kCvars[] = {"vo_enable",   "vo_mode",      "vo_radius",   "vo_radius2",
-                              "vo_dual_min", "vo_thickness", "vo_strength", "vo_normal",
-                              "vo_blur",     "vo_half",      "vo_show",     "vo_compute"};
+const char* const kCvars[] = {
+    "vo_enable", "vo_mode", "vo_radius", "vo_radius2", "vo_dual_min", "vo_thickness", "vo_strength",
+    "vo_normal", "vo_blur", "vo_half",   "vo_show",    "vo_compute",  "vo_shift"};
 
 TEST(ObscuranceCvars, DefaultsAreTheSettingsDefaultsAndTheDocumentedOnes) {
     CvarRegistry registry;
@@ -40,6 +40,7 @@ TEST(ObscuranceCvars, DefaultsAreTheSettingsDefaultsAndTheDocumentedOnes) {
     EXPECT_EQ(s.thickness, d.thickness);
     EXPECT_EQ(s.strength, d.strength);
     EXPECT_EQ(s.normal_clamp, d.normal_clamp);
+    EXPECT_EQ(s.shift, d.shift);
     EXPECT_EQ(s.blur, d.blur);
     EXPECT_EQ(s.half_resolution, d.half_resolution);
     EXPECT_EQ(s.show, d.show);
@@ -66,6 +67,7 @@ TEST(ObscuranceCvars, ValuesReachTheSettingsAndABadModeWarns) {
     registry.set("vo_dual_min", "1");
     registry.set("vo_half", "1");
     registry.set("vo_compute", "0");
+    registry.set("vo_shift", "0");
     ObscuranceSettings s = cvars.settings();
     EXPECT_TRUE(s.enabled);
     EXPECT_EQ(s.mode, ObscuranceMode::points33);
@@ -74,7 +76,10 @@ TEST(ObscuranceCvars, ValuesReachTheSettingsAndABadModeWarns) {
     EXPECT_EQ(s.dual, npr::obscurance::DualRadius::minimum);
     EXPECT_TRUE(s.half_resolution);
     EXPECT_EQ(s.compute, npr::obscurance::ComputeUse::off);
+    EXPECT_FALSE(s.shift);
     EXPECT_TRUE(warnings.empty());
+    registry.set("vo_shift", "1");
+    EXPECT_TRUE(cvars.settings().shift);
     registry.set("vo_compute", "1");
     EXPECT_EQ(cvars.settings().compute, npr::obscurance::ComputeUse::on);
     registry.set("vo_compute", "2");
