@@ -20,6 +20,8 @@ enum class Option {
     AlwaysRun,
     InvertMouse,
     MouseLook,
+    Obscurance,
+    ObscuranceHalf,
     Style,
     StyleSettings,
 };
@@ -45,6 +47,8 @@ constexpr OptionSpec kOptions[] = {
     {Option::AlwaysRun, "Always run", "cl_run", 0, 1, 1},
     {Option::InvertMouse, "Invert mouse", "m_pitch", 0, 0, 0},
     {Option::MouseLook, "Mouse look", "freelook", 0, 1, 1},
+    {Option::Obscurance, "Obscurance", "vo_enable", 0, 1, 1},
+    {Option::ObscuranceHalf, "Obscurance res", "vo_half", 0, 1, 1},
     {Option::Style, "Renderer style", nullptr, 0, 0, 0},
     {Option::StyleSettings, "Style settings...", nullptr, 0, 0, 0},
 };
@@ -182,7 +186,11 @@ void Menu::build_rows() {
                         break;
                     case Option::AlwaysRun:
                     case Option::MouseLook:
+                    case Option::Obscurance:
                         row.value = on_off(cvar->value() != 0);
+                        break;
+                    case Option::ObscuranceHalf:
+                        row.value = cvar->value() != 0 ? "half" : "full";
                         break;
                     case Option::InvertMouse:
                         row.value = on_off(cvar->value() < 0);
@@ -349,6 +357,8 @@ void Menu::adjust_option(int direction) {
             break;
         case Option::AlwaysRun:
         case Option::MouseLook:
+        case Option::Obscurance:
+        case Option::ObscuranceHalf:
             host_.cvars().set(*cvar, cvar->value() != 0 ? "0" : "1", CvarSource::kUser);
             break;
         case Option::InvertMouse:

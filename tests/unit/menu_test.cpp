@@ -176,6 +176,27 @@ TEST_F(MenuRules, TogglesFlipAndInvertMouseNegatesThePitchScale) {
     EXPECT_NEAR(cvar("m_pitch"), 0.022f, 1e-6f);
 }
 
+// The engine-wide obscurance (every style has it) is switched on the Options page itself.
+TEST_F(MenuRules, ObscuranceTogglesAreOnTheOptionsPageWhenTheEngineHasThem) {
+    menu.open(MenuScreen::Options);
+    EXPECT_EQ(row_of("Obscurance"), -1);  // no vo_enable registered yet
+    host.cvars().register_cvar({"vo_enable", "0", 0, "", 0.0f, 1.0f});
+    host.cvars().register_cvar({"vo_half", "0", 0, "", 0.0f, 1.0f});
+    menu.open(MenuScreen::Options);
+    go_to_row("Obscurance");
+    EXPECT_EQ(menu.rows()[size_t(menu.cursor())].value, "off");
+    press({"ENTER"});
+    EXPECT_EQ(cvar("vo_enable"), 1.0f);
+    EXPECT_EQ(menu.rows()[size_t(menu.cursor())].value, "on");
+    go_to_row("Obscurance res");
+    EXPECT_EQ(menu.rows()[size_t(menu.cursor())].value, "full");
+    press({"RIGHTARROW"});
+    EXPECT_EQ(cvar("vo_half"), 1.0f);
+    EXPECT_EQ(menu.rows()[size_t(menu.cursor())].value, "half");
+    press({"LEFTARROW"});
+    EXPECT_EQ(cvar("vo_half"), 0.0f);
+}
+
 TEST_F(MenuRules, RendererStyleCyclesThePluginsThroughRPlugin) {
     services.style_names = {"classic", "illustrative", "technical"};
     menu.open(MenuScreen::Options);
