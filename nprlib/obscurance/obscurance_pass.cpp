@@ -262,50 +262,65 @@ int symmetry_order(std::span<const Row> rows) {
     return 1;
 }
 
+// A line table as the estimate's uniforms: per line, what a turn keeps (x, y, its column's
+// half-length on the unit sphere, its weight per unit of that length) in u_samples, and for
+// the shift where it lies in the volume (its unit direction, the share of the sphere's volume
+// in the columns nearer the centre, half its weight) in u_polar.
+void set_line_uniforms(gl::Program& estimate, std::span<const LineSampleRow> rows) {
+    std::array<float, 4 * kMaxLineSamples> lines{}, polar{};
+    const size_t count = std::min(rows.size(), size_t(kMaxLineSamples));
+    for (size_t i = 0; i < count; ++i) {
+        const LineSampleRow& row = rows[i];
+        const float r2 = std::min(row.x * row.x + row.y * row.y, 1.0f);
+        const float column = std::sqrt(std::max(1.0f - r2, 1e-4f));
+        const glm::vec2 direction = unit_or_x(row.x, row.y);
+        const float share = 1.0f - (1.0f - r2) * std::sqrt(1.0f - r2);
+        const float turned[] = {row.x, row.y, column, row.weight / (2.0f * column)};
+        const float shifted[] = {direction.x, direction.y, share, 0.5f * row.weight};
+        std::copy(turned, turned + 4, lines.begin() + std::ptrdiff_t(4 * i));
+        std::copy(shifted, shifted + 4, polar.begin() + std::ptrdiff_t(4 * i));
+    }
+    glUniform4fv(estimate.location("u_samples"), GLsizei(count), lines.data());
+    glUniform4fv(estimate.location("u_polar"), GLsizei(count), polar.data());
+}
+
+// A point table as the estimate's uniforms: the rows themselves (x, y, z, weight) in
+// u_samples, and for the shift (its xy's unit direction, r^3, its height z / r) in u_polar.
+void set_point_uniforms(gl::Program& estimate, std::span<const PointSampleRow> rows) {
+    std::array<float, 4 * kMaxPointSamples> polar{};
+    const size_t count = std::min(rows.size(), size_t(kMaxPointSamples));
+    for (size_t i = 0; i < count; ++i) {
+        const glm::vec3 p(rows[i].x, rows[i].y, rows[i].z);
+        const float r = std::min(glm::length(p), 1.0f);
+        const glm::vec2 direction = unit_or_x(p.x, p.y);
+        const float height = r > 1e-6f ? std::clamp(p.z / r, -1.0f, 1.0f) : 0.0f;
+        const float shifted[] = {direction.x, direction.y, r * r * r, height};
+        std::copy(shifted, shifted + 4, polar.begin() + std::ptrdiff_t(4 * i));
+    }
+    glUniform4fv(estimate.location("u_samples"), GLsizei(count), &rows[0].x);
+    glUniform4fv(estimate.location("u_polar"), GLsizei(count), polar.data());
+}
+
 }  // namespace
 
 // The sample table of a lines or points mode, into its estimate program (in use), with the
-// span its per-pixel rotations cover.
+// span its per-pixel turns cover.
 void ObscurancePass::upload_samples(StagePrograms& programs, ObscuranceMode mode,
                                     SampleTableKey table) {
     gl::Program& estimate = programs.estimate[static_cast<size_t>(mode)];
     programs.uploaded[static_cast<size_t>(mode)] = table;
-    const SampleMethod method = table.method;
     constexpr float kFullTurn = 6.2831853f;
     float span = kFullTurn;
+    // effective_sample_count only asks for tables that exist; an empty one uploads nothing.
     if (samples_lines(mode)) {
-        const auto rows = line_sample_table(method, table.count);
-        if (rows.empty()) return;  // effective_sample_count only asks for tables that exist
-        // What rotating a sample keeps: its column's half-length on the unit sphere and its
-        // weight per unit of that length; for shifting it, where it lies in the volume.
-        std::array<float, 4 * kMaxLineSamples> lines{}, polar{};
-        for (size_t i = 0; i < rows.size() && i < size_t(kMaxLineSamples); ++i) {
-            const float r2 = std::min(rows[i].x * rows[i].x + rows[i].y * rows[i].y, 1.0f);
-            const float column = std::sqrt(std::max(1.0f - r2, 1e-4f));
-            const float values[] = {rows[i].x, rows[i].y, column, rows[i].weight / (2.0f * column)};
-            std::copy(values, values + 4, lines.begin() + std::ptrdiff_t(4 * i));
-            const glm::vec2 direction = unit_or_x(rows[i].x, rows[i].y);
-            const float share = 1.0f - (1.0f - r2) * std::sqrt(1.0f - r2);
-            const float shifted[] = {direction.x, direction.y, share, 0.5f * rows[i].weight};
-            std::copy(shifted, shifted + 4, polar.begin() + std::ptrdiff_t(4 * i));
-        }
-        glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), lines.data());
-        glUniform4fv(estimate.location("u_polar"), GLsizei(rows.size()), polar.data());
+        const auto rows = line_sample_table(table.method, table.count);
+        if (rows.empty()) return;
+        set_line_uniforms(estimate, rows);
         span = kFullTurn / float(symmetry_order(rows));
     } else if (samples_points(mode)) {
-        const auto rows = point_sample_table(method, table.count);
+        const auto rows = point_sample_table(table.method, table.count);
         if (rows.empty()) return;
-        glUniform4fv(estimate.location("u_samples"), GLsizei(rows.size()), &rows[0].x);
-        std::array<float, 4 * kMaxPointSamples> polar{};
-        for (size_t i = 0; i < rows.size() && i < size_t(kMaxPointSamples); ++i) {
-            const glm::vec3 p(rows[i].x, rows[i].y, rows[i].z);
-            const float r = std::min(glm::length(p), 1.0f);
-            const glm::vec2 direction = unit_or_x(p.x, p.y);
-            const float shifted[] = {direction.x, direction.y, r * r * r,
-                                     r > 1e-6f ? std::clamp(p.z / r, -1.0f, 1.0f) : 0.0f};
-            std::copy(shifted, shifted + 4, polar.begin() + std::ptrdiff_t(4 * i));
-        }
-        glUniform4fv(estimate.location("u_polar"), GLsizei(rows.size()), polar.data());
+        set_point_uniforms(estimate, rows);
         span = kFullTurn / float(symmetry_order(rows));
     }
     glUniform1f(estimate.location("u_rotation_span"), span);
