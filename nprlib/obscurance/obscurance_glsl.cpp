@@ -282,11 +282,11 @@ float open_fraction(vec3 p, vec3 n, float radius, Pattern pattern) {
 // turn's range meets every quarter of the shift's.
 uniform float u_rotation_span;
 const int kBayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
-float radical_inverse(int k, int base) {
-    float inverse = 0.0, digit = 1.0 / float(base);
-    for (; k > 0; k /= base, digit /= float(base)) inverse += float(k % base) * digit;
-    return inverse;
-}
+// Cell k's shifts, in 16ths and 27ths: k's 4 bits reversed, k's base-3 digits reversed.
+const vec2 kShift[16] = vec2[16](vec2(0, 0), vec2(8, 9), vec2(4, 18), vec2(12, 3),
+                                 vec2(2, 12), vec2(10, 21), vec2(6, 6), vec2(14, 15),
+                                 vec2(1, 24), vec2(9, 1), vec2(5, 10), vec2(13, 19),
+                                 vec2(3, 4), vec2(11, 13), vec2(7, 22), vec2(15, 7));
 Pattern pixel_pattern(ivec2 pixel) {
     Pattern pattern;
 #ifdef VO_REFERENCE
@@ -300,7 +300,7 @@ Pattern pixel_pattern(ivec2 pixel) {
     float c = cos(angle), s = sin(angle);
     pattern.rotation = mat2(c, s, -s, c);
     pattern.reflection = (bayer & 1) == 0 ? 1.0 : -1.0;
-    pattern.shift = vec2(radical_inverse(bayer, 2), radical_inverse(bayer, 3));
+    pattern.shift = kShift[bayer] / vec2(16.0, 27.0);
 #endif
     return pattern;
 }
