@@ -8,6 +8,7 @@ packages=(
   clang libclang-rt-14-dev          # libFuzzer targets and the fuzz preset
   libsdl2-dev libepoxy-dev libglm-dev
   libvorbis-dev                     # music: Ogg Vorbis tracks (vorbisfile)
+  libasound2-dev                    # ALSA: its error printing kept quiet without a sound card
   libopenmesh-dev                   # half-edge meshes for adjacency recovery
   libgtest-dev
   fteqcc                            # compiles the QuakeC test programs (tests/qc)

@@ -7,7 +7,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release
-cmake --build --preset release -j "$(nproc)"
+# The engine, the renderer plugins and the tools; the tests are scripts/test.sh's build.
+cmake --build --preset release -j "$(nproc)" --target programs
 data=${NPRQ_DATA:-../shared/data}
 export SDL_VIDEODRIVER=${SDL_VIDEODRIVER:-offscreen}
 engine=build/release/bin/nprquake

@@ -60,21 +60,34 @@ void Engine::start_demo_loop(const CommandArgs& args) {
     for (const std::string& name : present) line += " " + name;
     print(line);
     demo_loop_.set(std::move(present));
-    // Quake starts the loop only when nothing else runs (a +map or +timedemo came first);
-    // -benchmark's timedemo is queued behind quake.rc and is the job.
-    if (!demo_->active() && !quit_ && !options_.benchmark) play_next_loop_demo();
+    // Quake starts the loop only when nothing else runs (a +map or +timedemo came first; the
+    // rest of quake.rc waits for a command-line demo to end, and the loop stays off after it,
+    // played or failed); -benchmark's timedemo is queued behind quake.rc and is the job.
+    const bool after_command_line_demo = command_line_job_ && demo_is_job_;
+    if (!demo_->active() && !quit_ && !options_.benchmark && !after_command_line_demo) {
+        play_next_loop_demo();
+    }
 }
 
 void Engine::play_next_loop_demo() {
     const std::string name = demo_loop_.next();
     if (name.empty()) return;
     if (std::string why = demo_->start(name, DemoMode::Playback); !why.empty()) {
-        print("demos: " + why + "; the loop stops");
-        demo_loop_.set_playing(false);
-        return;
+        print("demos: " + why);
+        return continue_demo_loop(true);
     }
     show_showroom(false);
     demo_loop_.set_playing(true);
+}
+
+// After a loop demo ended (or could not start): the next one, unless every demo of the loop
+// has failed in a row, which stops the loop with one message instead of retrying forever.
+void Engine::continue_demo_loop(bool failed) {
+    demo_loop_.set_playing(false);
+    if (!demo_loop_.demo_ended(failed)) {
+        return print("demos: no demo of the loop can play; the loop stops (`demos` tries again)");
+    }
+    play_next_loop_demo();
 }
 
 }  // namespace nq

@@ -315,9 +315,10 @@ void Engine::frame() {
         trace_.lap(TraceStage::Demo);
         if (status == FrameStatus::Ended) {
             const bool next_in_loop = demo_loop_.playing();
+            const bool failed = !demo_->failure().empty();
             end_demo();
             timing = false;
-            if (next_in_loop && !quit_) play_next_loop_demo();
+            if (next_in_loop && !quit_) continue_demo_loop(failed);
         }
     }
     render(frame_time);

@@ -128,6 +128,7 @@ class Engine {
     void register_demo_loop_commands();
     void start_demo_loop(const CommandArgs& args);
     void play_next_loop_demo();
+    void continue_demo_loop(bool failed);
     // engine_sound.cpp
     void register_sound();
     void open_sound();  // the first frame sound is wanted: the device and the mixer

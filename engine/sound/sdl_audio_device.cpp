@@ -1,11 +1,22 @@
 #include "sound/sdl_audio_device.h"
 
+#include <alsa/asoundlib.h>
+
 #include <algorithm>
 
 namespace nq {
+namespace {
+
+// ALSA prints every failed probe of its default device to stderr ("ALSA lib confmisc.c:855:
+// cannot find card '0'", eight lines) when SDL tries it on a machine without a sound card; SDL
+// reports the failure itself, once, and the engine says so.
+void ignore_alsa_error(const char*, int, const char*, int, const char*, ...) {}
+
+}  // namespace
 
 std::unique_ptr<SdlAudioDevice> SdlAudioDevice::open(
     int rate, const std::function<void(std::string_view)>& print) {
+    snd_lib_error_set_handler(&ignore_alsa_error);  // SDL loads the same libasound.so.2
     if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
         print(std::string("sound: no audio (") + SDL_GetError() + "); playing silently");
         return nullptr;

@@ -37,10 +37,12 @@ struct VmLimits {
     uint32_t max_edicts = 8192;
     int max_call_depth = 64;      // QuakeSpasm's MAX_STACK_DEPTH
     uint32_t local_stack = 2048;  // words of saved locals (LOCALSTACK_SIZE)
-    int32_t runaway = 100000;     // statements per execute() before "runaway loop"
+    // Statements per execute() before "runaway loop": QuakeSpasm's 0x1000000, since real mods
+    // run past Quake's original 100,000 in one call (big spawn functions, bot waypoint loops).
+    int32_t runaway = 0x1000000;
     // Statements of an outermost execute() and every call nested in it: nested calls each get
     // their own `runaway`, so without this a hostile progs could nest loops into hours.
-    int64_t runaway_nested = 10000000;
+    int64_t runaway_nested = 4 * int64_t(0x1000000);
 };
 
 struct VmError {

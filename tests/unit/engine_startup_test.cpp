@@ -138,5 +138,69 @@ TEST(EngineStartup, WithoutPlusCommandsTheMainMenuShowsOverTheDemoLoop) {
     EXPECT_GE(matched, checked * 99 / 100) << matched << " of " << checked;
 }
 
+// A game directory over the real data whose map (the one the demos play on) is cut in half:
+// <base>/id1 is the data's lq1, <base>/broken holds the damaged map and its own quake.rc.
+struct BrokenLevelGame {
+    explicit BrokenLevelGame(const TempDir& dir, const std::string& quake_rc)
+        : base(dir.subdir("base")), user(dir.subdir("user")) {
+        std::filesystem::create_directory_symlink(lq1_dir(), base + "/id1");
+        auto map = read_file(lq1_dir() + "/maps/start.bsp");
+        EXPECT_TRUE(map) << "the demos' map maps/start.bsp is missing";
+        std::vector<uint8_t> half;
+        if (map) half.assign(map->begin(), map->begin() + std::ptrdiff_t(map->size() / 2));
+        std::filesystem::create_directories(base + "/broken/maps");
+        EXPECT_EQ(write_file(base + "/broken/maps/start.bsp", half), "");
+        write_text(base + "/broken/quake.rc", quake_rc);
+    }
+    std::vector<std::string> args(std::initializer_list<std::string> more) const {
+        std::vector<std::string> a{"-userdir", user, "-basedir", base, "-game", "broken",
+                                   "-width", "160", "-height", "120"};
+        a.insert(a.end(), more);
+        return a;
+    }
+    std::string base, user;
+};
+
+// Enough frames for a spinning loop to show itself, then an end.
+std::string wait_then_quit(int frames) {
+    std::string text;
+    for (int i = 0; i < frames; ++i) text += "wait\n";
+    return text + "echo waited\nquit\n";
+}
+
+size_t lines_starting_with(const std::string& text, const std::string& prefix) {
+    size_t n = 0;
+    for (const std::string& line : lines_containing(text, prefix)) n += line.rfind(prefix, 0) == 0;
+    return n;
+}
+
+TEST(EngineStartup, ADemoLoopWhoseLevelIsBrokenTriesEachDemoOnceThenStops) {
+    ASSERT_TRUE(demo_file_exists("demo") && demo_file_exists("demo2"));
+    TempDir dir;
+    BrokenLevelGame game(dir, "startdemos demo demo2\n" + wait_then_quit(150));
+    ProcessResult r = run_nprquake(game.args({}), dir.path(), 180);
+    ASSERT_EQ(r.exit_code, 0) << r.describe();
+    EXPECT_EQ(sanitizer_report(r.out + r.err), "");
+    EXPECT_NE(r.out.find("2 demo(s) in loop: demo demo2"), std::string::npos) << r.out;
+    // One failure per demo, then one message: no retrying while 150 frames go by.
+    EXPECT_EQ(lines_starting_with(r.out, "cannot load level: maps/start.bsp"), 2u) << r.out;
+    EXPECT_EQ(lines_starting_with(r.out, "demos: no demo of the loop can play"), 1u) << r.out;
+    EXPECT_LT(position_of(r.out, "demos: no demo of the loop"), position_of(r.out, "waited"));
+}
+
+TEST(EngineStartup, AFailedCommandLineTimedemoLeavesTheDemoLoopOff) {
+    TempDir dir;
+    BrokenLevelGame game(dir, "stuffcmds\nstartdemos demo demo2\n" + wait_then_quit(150));
+    ProcessResult r = run_nprquake(game.args({"+timedemo", "demo"}), dir.path(), 180);
+    EXPECT_EQ(r.exit_code, 1) << "the command line's timedemo failed\n" << r.describe();
+    EXPECT_EQ(sanitizer_report(r.out + r.err), "");
+    EXPECT_EQ(lines_starting_with(r.out, "timedemo demo failed (no frame rate reported)"), 1u)
+        << r.out;
+    // quake.rc's startdemos ran after it (it waited for the demo) and kept the loop off.
+    EXPECT_LT(position_of(r.out, "timedemo demo failed"), position_of(r.out, "demo(s) in loop"));
+    EXPECT_EQ(lines_starting_with(r.out, "cannot load level: maps/start.bsp"), 1u) << r.out;
+    EXPECT_NE(r.out.find("waited"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace nq
