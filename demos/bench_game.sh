@@ -14,9 +14,8 @@
 # usage: demos/bench_game.sh [--runs N] [--res WxH] [--out DIR]
 # env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
+source "$(dirname "$0")/common.sh"
+usage_lines=2,14
 runs=3
 res=640x480
 out=$root/build/bench_game
@@ -24,14 +23,12 @@ while [ $# -gt 0 ]; do
     case $1 in
         --runs) runs=$2; shift 2 ;;
         --res) res=$2; shift 2 ;;
-        --out) out=$2; shift 2 ;;
-        -h|--help) sed -n 2,14p "$0"; exit 0 ;;
-        *) echo "bench_game.sh: unknown option $1" >&2; exit 2 ;;
+        -h|--help) usage; exit 0 ;;
+        *) common_option "$@"; shift "$common_shift" ;;
     esac
 done
-engine=$build/bin/nprquake
-[ -x "$engine" ] || { echo "bench_game.sh: build first ($engine missing)" >&2; exit 1; }
-[ -d "$data/lq1" ] || { echo "bench_game.sh: no game data at $data/lq1" >&2; exit 1; }
+require_build
+require_data
 user=$out/user
 mkdir -p "$user/lq1"
 w=${res%x*}

@@ -28,10 +28,7 @@
 # Every run starts from its own empty user dir with every vo_* cvar on the command line, so
 # an archived config cannot leak in.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
-engine=$build/bin/nprquake
+source "$(dirname "$0")/common.sh"
 python=${PYTHON:-/usr/bin/python3}  # with numpy and PIL, for the error table
 resolutions="640x480 1024x768"
 out=$root/build/bench_obscurance
@@ -44,12 +41,11 @@ while [ $# -gt 0 ]; do
         --rounds) rounds=$2; shift 2 ;;
         --skip-cost) cost=0; shift ;;
         --skip-error) error=0; shift ;;
-        --out) out=$2; shift 2 ;;
-        *) echo "bench_obscurance.sh: unknown argument $1" >&2; exit 2 ;;
+        *) common_option "$@"; shift "$common_shift" ;;
     esac
 done
-[ -x "$engine" ] || { echo "bench_obscurance.sh: build first ($engine missing)" >&2; exit 1; }
-[ -d "$data/lq1" ] || { echo "bench_obscurance.sh: no game data at $data/lq1" >&2; exit 1; }
+require_build
+require_data
 mkdir -p "$out/logs" "$out/shots" "$out/scenes"
 defaults="+vo_radius 24 +vo_radius2 0 +vo_dual_min 0 +vo_thickness 32 +vo_strength 1 \
 +vo_normal 1 +vo_show 0 +vo_compute 1 +vo_shift 1"

@@ -22,9 +22,7 @@
 # true and fps null, never a number), frames/ (every run's frame times, -benchframes), logs/
 # (every run's output) and summary.md.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
+source "$(dirname "$0")/common.sh"
 rounds=3
 plugins="classic"
 demos="demo demo2"
@@ -42,30 +40,24 @@ while [ $# -gt 0 ]; do
         --res) resolutions=$2; shift 2 ;;
         --no-peer) peer=0; shift ;;
         --peer) [ "$2" = quakespasm ] && peer=1 || peer=0; shift 2 ;;
-        --out) out=$2; shift 2 ;;
         --trace) trace=1; shift ;;
         --base) base=$2; shift 2 ;;
         --peer-tail) peer_tail=1; shift ;;
-        *) echo "bench_timedemo.sh: unknown option $1" >&2; exit 2 ;;
+        *) common_option "$@"; shift "$common_shift" ;;
     esac
 done
-engine=$build/bin/nprquake
-[ -x "$engine" ] || { echo "bench_timedemo.sh: build first ($engine missing)" >&2; exit 1; }
-if [ -n "$base" ] && [ ! -x "$base/bin/nprquake" ]; then
-    echo "bench_timedemo.sh: --base $base: no $base/bin/nprquake" >&2; exit 1
-fi
-[ -d "$data/lq1" ] || { echo "bench_timedemo.sh: no game data at $data/lq1" >&2; exit 1; }
-peer_script=$root/../shared/tools/quakespasm_timedemo.sh
-if [ $peer = 1 ] && [ ! -x "$peer_script" ]; then
-    echo "bench_timedemo.sh: $peer_script not found; use --no-peer" >&2; exit 1
-fi
+require_build
+if [ -n "$base" ] && [ ! -x "$base/bin/nprquake" ]; then die "--base $base: no $base/bin/nprquake"; fi
+require_data
+# The tool installs QuakeSpasm when it runs: the tool is all the peer needs here.
+if [ $peer = 1 ] && [ ! -x "$quakespasm_tool" ]; then die "$quakespasm_tool not found; use --no-peer"; fi
 mkdir -p "$out/frames" "$out/logs" "$out/user/lq1" "$out/traces"
 
 # A demo given as a file: the engine finds it by name in the user dir.
 demo_name() { case $1 in *.dem) basename "$1" .dem ;; *) echo "$1" ;; esac; }
 for demo in $demos; do
     case $demo in
-        *.dem) [ -f "$demo" ] || { echo "bench_timedemo.sh: $demo: no such file" >&2; exit 1; }
+        *.dem) [ -f "$demo" ] || die "$demo: no such file"
                cp "$demo" "$out/user/lq1/" ;;
     esac
 done
@@ -114,7 +106,7 @@ run_peer() {  # round demo WxH
     if [ $peer_tail = 1 ]; then
         # quakespasm_tail.sh passes the timedemo tool's own line ("quakespasm DEMO WxH FPS") to
         # stderr and prints its frame-time figures on stdout.
-        line=$(QUAKESPASM_TIMEDEMO=$peer_script "$root/demos/quakespasm_tail.sh" "$2" "$res" \
+        line=$(QUAKESPASM_TIMEDEMO=$quakespasm_tool "$root/demos/quakespasm_tail.sh" "$2" "$res" \
             2>"$log" | tail -1) || status=$?
         tail_json=$(echo "$line" | awk '$1 == "quakespasm-tail" {
             printf "{\"median_ms\":%s,\"p95_ms\":%s,\"p99_ms\":%s,\"low1_fps\":%s,\"avg_fps\":%s}",
@@ -123,7 +115,7 @@ run_peer() {  # round demo WxH
         tail_json=${tail_json:-'{"failed":true}'}
         line=$(grep -E '^quakespasm ' "$log" | tail -1) || true
     else
-        line=$("$peer_script" "$2" "$res" 1 2>"$log" | tail -1) || status=$?
+        line=$("$quakespasm_tool" "$2" "$res" 1 2>"$log" | tail -1) || status=$?
     fi
     fps=$(echo "$line" | awk '{print $4}')
     case $fps in ''|FAIL|*[!0-9.]*) fps="" ;; esac

@@ -15,9 +15,9 @@
 # Output in --out (default build/benchmark). The exit status is 1 when any run failed (the
 # report still shows the cells that worked, and the failed ones as failed).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
+source "$(dirname "$0")/common.sh"
+usage_lines=7,16
+usage_on_error=1
 demos="demo demo2"
 styles="classic technical illustrative"
 sizes="640x480 1024x768"
@@ -35,22 +35,18 @@ while [ $# -gt 0 ]; do
         --runs) runs=$2; shift 2 ;;
         --peer) peer=$2; shift 2 ;;
         --gallery-frame) gallery_frame=$2; shift 2 ;;
-        --out) out=$2; shift 2 ;;
-        *) sed -n '7,16p' "$0" >&2; exit 2 ;;
+        *) common_option "$@"; shift "$common_shift" ;;
     esac
 done
-engine=$build/bin/nprquake
-[ -x "$engine" ] || { echo "benchmark.sh: build first ($engine missing)" >&2; exit 1; }
-[ -d "$data/lq1" ] || { echo "benchmark.sh: no game data at $data/lq1" >&2; exit 1; }
+require_build
+require_data
 /usr/bin/python3 -c "import matplotlib" 2>/dev/null ||
-    { echo "benchmark.sh: needs python3-matplotlib (scripts/install-deps.sh)" >&2; exit 1; }
-peer_tool=$root/../shared/tools/quakespasm_timedemo.sh
+    die "needs python3-matplotlib (scripts/install-deps.sh)"
 case $peer in
-    auto) if [ -x /usr/games/quakespasm ] && [ -x "$peer_tool" ]; then peer=quakespasm; else peer=none; fi ;;
-    quakespasm) [ -x /usr/games/quakespasm ] && [ -x "$peer_tool" ] ||
-        { echo "benchmark.sh: QuakeSpasm or $peer_tool is not installed" >&2; exit 1; } ;;
+    auto) if quakespasm_installed; then peer=quakespasm; else peer=none; fi ;;
+    quakespasm) quakespasm_installed || die "QuakeSpasm or $quakespasm_tool is not installed" ;;
     none) ;;
-    *) echo "benchmark.sh: --peer quakespasm or none" >&2; exit 2 ;;
+    *) echo "$me: --peer quakespasm or none" >&2; exit 2 ;;
 esac
 rm -rf "$out"
 mkdir -p "$out/gallery"

@@ -14,9 +14,9 @@
 # env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
 # Needs ImageMagick (convert) and whatever quakespasm_timedemo.sh installs.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
+source "$(dirname "$0")/common.sh"
+usage_lines=13,14
+usage_on_error=1
 frame=301
 seconds=5
 size=640x480
@@ -26,16 +26,14 @@ while [ $# -gt 0 ]; do
         --frame) frame=$2; shift 2 ;;
         --seconds) seconds=$2; shift 2 ;;
         --size) size=$2; shift 2 ;;
-        --out) out=$2; shift 2 ;;
-        *) echo "usage: $0 [--frame N] [--seconds S] [--size WxH] [--out FILE.jpg]" >&2; exit 2 ;;
+        *) common_option "$@"; shift "$common_shift" ;;
     esac
 done
-engine=$build/bin/nprquake
-peer=$root/../shared/tools/quakespasm_timedemo.sh
-[ -x "$engine" ] || { echo "compare_quakespasm.sh: build first ($engine missing)" >&2; exit 1; }
-[ -d "$data/lq1" ] || { echo "compare_quakespasm.sh: no game data at $data/lq1" >&2; exit 1; }
-[ -x "$peer" ] || { echo "compare_quakespasm.sh: $peer missing" >&2; exit 1; }
-command -v convert >/dev/null || { echo "compare_quakespasm.sh: needs ImageMagick" >&2; exit 1; }
+require_build
+require_data
+# The tool installs QuakeSpasm when it runs: the tool is all this needs.
+[ -x "$quakespasm_tool" ] || die "$quakespasm_tool missing"
+require_command convert "needs ImageMagick"
 work=$(mktemp -d)
 trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
 
@@ -43,7 +41,7 @@ SDL_VIDEODRIVER=offscreen "$engine" -basedir "$data" -game lq1 -userdir "$work/u
     -width "${size%x*}" -height "${size#*x}" +r_plugin classic +viewsize 110 +scr_sbarscale 1.6 \
     +demo_at "$frame" "screenshot $work/ours.png; quit" +timedemo demo >"$work/ours.log" 2>&1 \
     || { cat "$work/ours.log" >&2; exit 1; }
-LQ1="$data/lq1" "$peer" --shot "$seconds" "$work/quakespasm.png" demo "$size" >&2
+LQ1="$data/lq1" "$quakespasm_tool" --shot "$seconds" "$work/quakespasm.png" demo "$size" >&2
 [ -f "$work/ours.png" ] && [ -f "$work/quakespasm.png" ] \
     || { echo "compare_quakespasm.sh: a screenshot is missing (KEEP=1 keeps $work)" >&2; exit 1; }
 mkdir -p "$(dirname "$out")"

@@ -2,22 +2,21 @@
 # on the showroom and on paused demo.dem frames with a list of settings, and lay the screenshots
 # out as labelled contact sheets (ImageMagick). Source it after setting:
 #   style     the plugin under test, e.g. technical
+#   compare_styles  (optional) the styles compared on the demo frames, $style last (default
+#             "classic $style")
+# It sources common.sh ($root, $data, $engine, ...); then set, before gallery_init:
 #   defaults  console commands every picture starts from (the cvar defaults written out, so a
 #             user's config cannot leak in)
 #   settings  array of "name|commands" pictures (commands on top of the defaults)
 #   out       the output folder
 #   engine_args  (optional) extra command-line arguments for every run, e.g. "+vo_enable 1"
 # Then: gallery_init; gallery_showroom; gallery_demo "300 600 760"; compare_sheets; group ...
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
-engine=$build/bin/nprquake
-gallery_name=$(basename "$0")
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 gallery_init() {
-    [ -x "$engine" ] || { echo "$gallery_name: build first ($engine missing)" >&2; exit 1; }
-    [ -d "$data/lq1" ] || { echo "$gallery_name: no game data at $data/lq1" >&2; exit 1; }
-    command -v montage >/dev/null || { echo "$gallery_name: needs ImageMagick" >&2; exit 1; }
+    require_build
+    require_data
+    require_command montage "needs ImageMagick"
     work=$(mktemp -d)
     trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
     mkdir -p "$out" "$work/user/id1" "$work/user/lq1"
@@ -74,7 +73,7 @@ sheet() {  # output title files...
 
 labelled() {  # prefix name caption -> path of a labelled copy
     local src=$work/$1_$2.png dst=$work/label_$1_$2.png
-    [ -f "$src" ] || { echo "$gallery_name: missing $src (see $work/*.log)" >&2; return 1; }
+    [ -f "$src" ] || { echo "$me: missing $src (see $work/*.log)" >&2; return 1; }
     montage -label "$3" "$src" -geometry +0+0 -font DejaVu-Sans -pointsize 16 "$dst"
     echo "$dst"
 }

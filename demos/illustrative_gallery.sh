@@ -10,9 +10,9 @@
 set -euo pipefail
 style=illustrative
 compare_styles="classic technical illustrative"
-out=$(cd "$(dirname "$0")/.." && pwd)/docs/images/illustrative
-[ "${1:-}" = "--out" ] && out=$2
 source "$(dirname "$0")/gallery_lib.sh"
+out=$root/docs/images/illustrative
+[ "${1:-}" = "--out" ] && out=$2
 
 # The cvar defaults, written out so a user's config cannot leak in.
 defaults="ill_show 0; ill_ramp tf2; ill_halflambert_alpha 0.5; ill_halflambert_beta 0.5;

@@ -9,9 +9,9 @@
 # env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
 # Exit status 1 when the run or the measurement failed.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
+source "$(dirname "$0")/common.sh"
+usage_lines=8,9
+usage_on_error=1
 demo=""
 frame=""
 frames=8
@@ -23,15 +23,12 @@ while [ $# -gt 0 ]; do
         --frame) frame=$2; shift 2 ;;
         --frames) frames=$2; shift 2 ;;
         --size) size=$2; shift 2 ;;
-        --out) out=$2; shift 2 ;;
-        *) sed -n '8,9p' "$0" >&2; exit 2 ;;
+        *) common_option "$@"; shift "$common_shift" ;;
     esac
 done
-[ -n "$demo" ] && [ -n "$frame" ] && [ -n "$out" ] || { sed -n '8,9p' "$0" >&2; exit 2; }
-engine=$build/bin/nprquake
-[ -x "$engine" ] && [ -x "$build/bin/edgequality" ] ||
-    { echo "line_quality.sh: build first ($engine or edgequality missing)" >&2; exit 1; }
-[ -d "$data/lq1" ] || { echo "line_quality.sh: no game data at $data/lq1" >&2; exit 1; }
+[ -n "$demo" ] && [ -n "$frame" ] && [ -n "$out" ] || { usage >&2; exit 2; }
+require_build edgequality
+require_data
 
 reference_settings="tech_shading 3; tech_silhouettes 0; tech_creases 0; tech_world_edges 0"
 reference_settings="$reference_settings; tech_shadows 0; tech_fade 0; tech_edge_colors 0"

@@ -10,9 +10,9 @@ set -euo pipefail
 style=classic
 compare_styles="classic technical illustrative"
 engine_args="+vo_enable 1"
-out=$(cd "$(dirname "$0")/.." && pwd)/docs/images/obscurance
-[ "${1:-}" = "--out" ] && out=$2
 source "$(dirname "$0")/gallery_lib.sh"
+out=$root/docs/images/obscurance
+[ "${1:-}" = "--out" ] && out=$2
 
 # The cvar defaults, written out so a user's config cannot leak in.
 defaults="vo_enable 1; vo_mode lines5; vo_radius 24; vo_radius2 0; vo_dual_min 0; vo_thickness 32;

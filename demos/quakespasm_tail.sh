@@ -11,27 +11,28 @@
 # Prints: quakespasm-tail DEMO WxH frames N median M 95th A 99th B 99th/median R 1%-low L fps
 #         (avg F fps, low/avg Q)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-tool=${QUAKESPASM_TIMEDEMO:-$root/../shared/tools/quakespasm_timedemo.sh}
+source "$(dirname "$0")/common.sh"
+usage_lines=2,12
+tool=${QUAKESPASM_TIMEDEMO:-$quakespasm_tool}
 peer=${PEER:-/tmp/peer}
-case ${1:-} in -h|--help|"") sed -n 2,13p "$0"; exit 0 ;; esac
+case ${1:-} in -h|--help|"") usage; exit 0 ;; esac
 demo=$1
 res=${2:-640x480}
-[ -x /usr/games/quakespasm ] || { echo "quakespasm_tail.sh: quakespasm is not installed" >&2; exit 1; }
-[ -f "$tool" ] || { echo "quakespasm_tail.sh: no $tool" >&2; exit 1; }
-command -v xvfb-run >/dev/null || { echo "quakespasm_tail.sh: xvfb-run missing" >&2; exit 1; }
+[ -x "$quakespasm_bin" ] || die "quakespasm is not installed"
+[ -f "$tool" ] || die "no $tool"
+require_command xvfb-run "xvfb-run missing"
 
 # The reference tool builds the game dir, copies a .dem file into it and times one run.
 PEER=$peer bash "$tool" "$demo" "$res" 1 >&2
 name=$(basename "$demo" .dem)
 base=$peer/base
-[ -f "$base/id1/$name.dem" ] || { echo "quakespasm_tail.sh: no $base/id1/$name.dem" >&2; exit 1; }
+[ -f "$base/id1/$name.dem" ] || die "no $base/id1/$name.dem"
 
 run=$(mktemp -d)
 trap 'rm -rf "$run"' EXIT
 cat > "$run/inner.sh" <<EOF
 cd "$run"
-/usr/games/quakespasm -basedir "$base" -nosound -width ${res%x*} -height ${res#*x} -window \
+"$quakespasm_bin" -basedir "$base" -nosound -width ${res%x*} -height ${res#*x} -window \
     -condebug +host_speeds 1 +timedemo "$name" > stdout.txt 2>&1 &
 pid=\$!
 for _ in \$(seq 2400); do

@@ -10,9 +10,8 @@
 # env:   NPRQ_DATA (default ../shared/data), BUILD (default build/release)
 # Writes DIR/play_<map>.dem (default DIR: build/gameplay) and prints one line per demo.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-data=${NPRQ_DATA:-$root/../shared/data}
-build=${BUILD:-$root/build/release}
+source "$(dirname "$0")/common.sh"
+usage_lines=2,11
 maps="e2m3 lq1m1"
 legs=8
 out=$root/build/gameplay
@@ -20,14 +19,12 @@ while [ $# -gt 0 ]; do
     case $1 in
         --maps) maps=$2; shift 2 ;;
         --legs) legs=$2; shift 2 ;;
-        --out) out=$2; shift 2 ;;
-        -h|--help) sed -n 2,11p "$0"; exit 0 ;;
-        *) echo "record_gameplay.sh: unknown option $1" >&2; exit 2 ;;
+        -h|--help) usage; exit 0 ;;
+        *) common_option "$@"; shift "$common_shift" ;;
     esac
 done
-engine=$build/bin/nprquake
-[ -x "$engine" ] || { echo "record_gameplay.sh: build first ($engine missing)" >&2; exit 1; }
-[ -d "$data/lq1" ] || { echo "record_gameplay.sh: no game data at $data/lq1" >&2; exit 1; }
+require_build
+require_data
 user=$(mktemp -d)
 trap 'rm -rf "$user"' EXIT
 mkdir -p "$user/lq1" "$out"

@@ -9,9 +9,9 @@
 # screen tints are off, so the pictures show the models.
 set -euo pipefail
 style=technical
-out=$(cd "$(dirname "$0")/.." && pwd)/docs/images/technical
-[ "${1:-}" = "--out" ] && out=$2
 source "$(dirname "$0")/gallery_lib.sh"
+out=$root/docs/images/technical
+[ "${1:-}" = "--out" ] && out=$2
 
 # The defaults every picture starts from (the cvar defaults, written out so a user's config
 # cannot leak in).
