@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "formats/mdl.h"
+#include "formats/model_format.h"
 #include "formats/spr.h"
 #include "render/lighting_rgb.h"
 #include "render/placeholder_model.h"
@@ -17,11 +18,6 @@ std::string lower_case(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return s;
-}
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() &&
-           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // "*12" -> 12; 0 when `name` is not a submodel reference.
@@ -73,7 +69,12 @@ void ModelCache::note_warnings(const std::string& name, const std::vector<std::s
 Result<std::shared_ptr<const BrushModelData>> ModelCache::load_brush_data(const std::string& name) {
     auto bytes = reader_(name);
     if (!bytes) return bytes.error();
-    auto bsp = parse_bsp(*bytes, name);
+    return brush_data_from(*bytes, name);
+}
+
+Result<std::shared_ptr<const BrushModelData>> ModelCache::brush_data_from(
+    std::span<const uint8_t> bytes, const std::string& name) {
+    auto bsp = parse_bsp(bytes, name);
     if (!bsp) return bsp.error();
     const std::string lit_name = lit_name_for(name);
     auto lit = reader_(lit_name);  // optional: a missing .lit is the normal case
@@ -111,28 +112,41 @@ std::unique_ptr<RenderModel> ModelCache::load_submodel(const std::string& name) 
     return placeholder(name, world_id_ ? "the world has no such inline model" : "no world loaded");
 }
 
+// The file's first bytes decide what it is (as Quake's Mod_ForName), not its name; a name that
+// says otherwise only warns, so a ".mdl" that is really a sprite still draws.
 std::unique_ptr<RenderModel> ModelCache::load_model(const std::string& name) {
     if (submodel_number(name) > 0) return load_submodel(name);
-    const std::string lower = lower_case(name);
-    if (ends_with(lower, ".bsp")) {
-        auto data = load_brush_data(name);
-        if (!data) return placeholder(name, data.error().to_string());
-        return RenderModel::brush(name, *data, 0);
-    }
-    const bool is_mdl = ends_with(lower, ".mdl"), is_spr = ends_with(lower, ".spr");
-    if (!is_mdl && !is_spr) return placeholder(name, "unknown model type");
     auto bytes = reader_(name);
     if (!bytes) return placeholder(name, bytes.error().to_string());
-    if (is_mdl) {
-        auto mdl = parse_mdl(*bytes, name);
-        if (!mdl) return placeholder(name, mdl.error().to_string());
-        note_warnings(name, mdl->warnings);
-        return RenderModel::alias(name, AliasModelData::build(std::move(*mdl)));
+    const ModelFormat format = identify_model(*bytes);
+    if (format == ModelFormat::unknown) {
+        return placeholder(name, "offset 0: not a model (" + describe_model_magic(*bytes) +
+                                     "; expected \"IDPO\", \"IDSP\" or a BSP version)");
     }
-    auto spr = parse_spr(*bytes, name);
-    if (!spr) return placeholder(name, spr.error().to_string());
-    note_warnings(name, spr->warnings);
-    return RenderModel::sprite(name, SpriteModelData::build(std::move(*spr)));
+    const ModelFormat named = model_format_by_extension(name);
+    if (named != format) {
+        warnings_.push_back(name + ": its content is a " + model_format_name(format) +
+                            ", whatever its name says; loaded as one");
+    }
+    switch (format) {
+        case ModelFormat::brush: {
+            auto data = brush_data_from(*bytes, name);
+            if (!data) return placeholder(name, data.error().to_string());
+            return RenderModel::brush(name, *data, 0);
+        }
+        case ModelFormat::alias: {
+            auto mdl = parse_mdl(*bytes, name);
+            if (!mdl) return placeholder(name, mdl.error().to_string());
+            note_warnings(name, mdl->warnings);
+            return RenderModel::alias(name, AliasModelData::build(std::move(*mdl)));
+        }
+        default: {
+            auto spr = parse_spr(*bytes, name);
+            if (!spr) return placeholder(name, spr.error().to_string());
+            note_warnings(name, spr->warnings);
+            return RenderModel::sprite(name, SpriteModelData::build(std::move(*spr)));
+        }
+    }
 }
 
 }  // namespace nq

@@ -5,12 +5,14 @@
 // submodels "*1".."*N" (ids 2..N+1), which is the order of Quake's model precache list, so a
 // client that loads the rest of the list in order gets id == precache index.
 //
+// What a model is, its file's first bytes say (model_format.h), not its name.
 // A model that cannot be read or parsed never fails the map: it gets a placeholder (a small red
 // box, placeholder_model.h) under its name and a warning. Only the world map itself can fail.
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -52,6 +54,8 @@ class ModelCache {
     std::unique_ptr<RenderModel> load_model(const std::string& name);
     std::unique_ptr<RenderModel> load_submodel(const std::string& name);
     Result<std::shared_ptr<const BrushModelData>> load_brush_data(const std::string& name);
+    Result<std::shared_ptr<const BrushModelData>> brush_data_from(std::span<const uint8_t> bytes,
+                                                                  const std::string& name);
     std::unique_ptr<RenderModel> placeholder(const std::string& name, const std::string& why);
     void note_warnings(const std::string& name, const std::vector<std::string>& warnings);
 

@@ -1,7 +1,10 @@
 // The model cache: start.bsp as the world with its inline submodels (ranges and bounds checked
 // against the raw models lump), ids in request order, alias/sprite/standalone brush models,
-// missing and broken models as placeholders with warnings.
+// missing and broken models as placeholders with warnings; a model's kind told by its first bytes,
+// not its name.
 #include <gtest/gtest.h>
+
+#include <map>
 
 #include "render/model_cache.h"
 #include "render/placeholder_model.h"
@@ -126,6 +129,65 @@ TEST(RenderModelCache, BrokenFileIsAPlaceholderNamingTheProblem) {
     const nqr_model_id id = cache.load("progs/broken.mdl");
     EXPECT_TRUE(cache.get(id)->placeholder());
     EXPECT_TRUE(any_warning_names(cache.take_warnings(), "progs/broken.mdl"));
+}
+
+// A reader that serves real files under other names: misnamed models, as mods ship them.
+ModelCache::FileReader renaming_reader(std::map<std::string, std::string> served_as) {
+    return [served_as, real = render_test::lq1_reader()](const std::string& path) {
+        const auto it = served_as.find(path);
+        return real(it == served_as.end() ? path : it->second);
+    };
+}
+
+TEST(RenderModelCache, AModelsKindComesFromItsBytesNotItsName) {
+    ModelCache cache(renaming_reader({{"progs/explosion.mdl", "progs/s_explod.spr"},
+                                      {"progs/player.bsp", "progs/player.mdl"},
+                                      {"progs/box.spr", "maps/b_batt0.bsp"}}));
+    const std::vector<std::pair<std::string, uint32_t>> cases = {
+        {"progs/explosion.mdl", NQR_MODEL_SPRITE},
+        {"progs/player.bsp", NQR_MODEL_ALIAS},
+        {"progs/box.spr", NQR_MODEL_BRUSH}};
+    for (const auto& [name, kind] : cases) {
+        const RenderModel* m = cache.get(cache.load(name));
+        ASSERT_NE(m, nullptr) << name;
+        EXPECT_FALSE(m->placeholder()) << name;
+        EXPECT_EQ(m->kind(), kind) << name;
+        const auto warnings = cache.take_warnings();
+        EXPECT_TRUE(any_warning_names(warnings, name + ": its content is a")) << name;
+    }
+    // The same content as under its own name: the sprite's frames, the model's frames.
+    ModelCache proper(render_test::lq1_reader());
+    EXPECT_EQ(cache.get(cache.find("progs/explosion.mdl"))->abi()->sprite->num_frames,
+              proper.get(proper.load("progs/s_explod.spr"))->abi()->sprite->num_frames);
+    EXPECT_EQ(cache.get(cache.find("progs/player.bsp"))->abi()->alias->num_frames,
+              proper.get(proper.load("progs/player.mdl"))->abi()->alias->num_frames);
+    EXPECT_FALSE(any_warning_names(proper.take_warnings(), "its content is a"))
+        << "a rightly named model warns of nothing";
+}
+
+TEST(RenderModelCache, AFileThatIsNoModelIsAPlaceholderNamingItsFirstBytes) {
+    const std::string wav = "sound/weapons/sgun1.wav";
+    ModelCache cache(renaming_reader({{"progs/shotgun.mdl", wav}}));
+    const RenderModel* m = cache.get(cache.load("progs/shotgun.mdl"));
+    ASSERT_NE(m, nullptr);
+    EXPECT_TRUE(m->placeholder());
+    const std::vector<uint8_t> raw = render_test::lq1_bytes(wav);
+    ASSERT_GE(raw.size(), 4u);
+    const std::string magic(raw.begin(), raw.begin() + 4);  // "RIFF" in any WAV
+    EXPECT_TRUE(any_warning_names(cache.take_warnings(),
+                                  "progs/shotgun.mdl: offset 0: not a model (first bytes \"" +
+                                      magic + "\""));
+}
+
+TEST(RenderModelCache, UnprintableOrNoFirstBytesAreNamedInHexOrAsEmpty) {
+    ModelCache cache([](const std::string& path) -> Result<std::vector<uint8_t>> {
+        if (path == "progs/empty.mdl") return std::vector<uint8_t>{};
+        return std::vector<uint8_t>{0x1f, 0x8b, 0x08, 0x00, 0x11};  // a gzip header
+    });
+    EXPECT_TRUE(cache.get(cache.load("progs/packed.mdl"))->placeholder());
+    EXPECT_TRUE(any_warning_names(cache.take_warnings(), "(first bytes 1f 8b 08 00;"));
+    EXPECT_TRUE(cache.get(cache.load("progs/empty.mdl"))->placeholder());
+    EXPECT_TRUE(any_warning_names(cache.take_warnings(), "not a model (an empty file;"));
 }
 
 TEST(RenderModelCache, MissingWorldFailsAndNewWorldRestartsIds) {
