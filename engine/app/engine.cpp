@@ -111,7 +111,12 @@ bool Engine::start() {
          10.0f});
     register_game_cvars();
     obscurance_cvars_.register_cvars(host_.cvars(), [this](const std::string& t) { print(t); });
-    register_sound();
+    sound_ = std::make_unique<GameSound>(host_, command_line_.has("-nosound"),
+                                         [this](std::string_view t) { print(t); });
+    sound_->set_reader([this](const std::string& path) -> Result<std::vector<uint8_t>> {
+        if (!vfs_) return Error{path, 0, "no game data mounted"};
+        return vfs_->read(path);
+    });
     input_ = std::make_unique<PlayerInput>(host_.commands());
     cvars_.gamma = host_.cvars().register_cvar(
         {"gamma", "1", kCvarArchive,

@@ -35,9 +35,7 @@
 #include "hud/hud.h"
 #include "menu/menu.h"
 #include "plugin/plugin_host.h"
-#include "sound/client_sound_feed.h"
-#include "sound/sound_commands.h"
-#include "sound/sound_system.h"
+#include "sound/game_sound.h"
 #include "video/frame_stats.h"
 #include "video/frame_throttle.h"
 #include "video/frame_trace.h"
@@ -130,8 +128,6 @@ class Engine {
     void play_next_loop_demo();
     void continue_demo_loop(bool failed);
     // engine_sound.cpp
-    void register_sound();
-    void open_sound();  // the first frame sound is wanted: the device and the mixer
     void update_sound(double frame_time);
 
     // engine_models.cpp
@@ -208,14 +204,8 @@ class Engine {
     GameCvars game_cvars_;
     SceneBuilder scene_;
     ViewState view_state_;
-    // Sound: none at all with -nosound (no device, no mixer); opened when first wanted.
-    SoundCvars sound_cvars_;
-    std::unique_ptr<SoundSystem> sound_;
-    ClientSoundFeed sound_feed_;
-    Listener listener_;            // the view drawn last
-    bool sound_disabled_ = false;  // -nosound, or no device could be opened
-    uint32_t sound_demo_starts_ = 0;
-    bool sound_demo_active_ = false;
+    std::unique_ptr<GameSound> sound_;
+    Listener listener_;  // the view drawn last, where sound is heard from
     std::unique_ptr<Showroom> showroom_;
     bool showroom_models_registered_ = false;
     bool level_models_registered_ = false;
