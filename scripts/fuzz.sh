@@ -31,6 +31,7 @@ case $format in
     wav) exts="wav" ;;
     warp_ramp) exts="lmp png" ;;
     material) exts="mat" ;;
+    host) exts="cfg rc" ;;  # default.cfg, quake.rc: the console language as games write it
     *) exts="" ;;
 esac
 
