@@ -5,9 +5,6 @@
 // engine_demo_alloc_test.)
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <vector>
 
 #include "client/demo_player.h"
@@ -15,38 +12,12 @@
 #include "client/view.h"
 #include "client/visible_entities.h"
 #include "client_test_fixture.h"
-
-namespace {
-std::atomic<size_t> g_allocations{0};
-
-void* counted_allocation(size_t size) {
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size ? size : 1)) return p;
-    throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(size_t size) {
-    return counted_allocation(size);
-}
-void* operator new[](size_t size) {
-    return counted_allocation(size);
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, size_t) noexcept {
-    std::free(p);
-}
+#include "support/allocation_counter.h"
 
 namespace nq {
 namespace {
+
+using ::nq::test::g_allocations;
 
 struct FrameAllocations {
     size_t frames = 0;

@@ -19,12 +19,12 @@
 #include "engine_demo_replay.h"
 #include "hud/hud_scene.h"
 #include "hud_test_support.h"
-#include "render_allocation_counter.h"
+#include "support/allocation_counter.h"
 
 namespace nq {
 namespace {
 
-using render_test::g_allocations;
+using ::nq::test::g_allocations;
 
 constexpr size_t kWarmupFrames = 10;  // after the start and after each level load
 

@@ -6,7 +6,7 @@
 
 #include "app/live_game.h"
 #include "common/file_io.h"
-#include "render_allocation_counter.h"
+#include "support/allocation_counter.h"
 #include "server/monster_waking.h"
 #include "server/server_commands.h"
 #include "server/server_level.h"
@@ -43,9 +43,9 @@ TEST(EngineGameAlloc, HuntedPlayerFramesAllocateNothingOnceWarm) {
     const int hunting = server::monsters_hunting_player(level);
     EXPECT_GE(hunting, 5);
     ASSERT_TRUE(run(10 * 72));  // warm: every buffer at its working size
-    const long before = render_test::g_allocations.load();
+    const long before = ::nq::test::g_allocations.load();
     ASSERT_TRUE(run(10 * 72));
-    EXPECT_EQ(render_test::g_allocations.load() - before, 0)
+    EXPECT_EQ(::nq::test::g_allocations.load() - before, 0)
         << "allocations over 720 frames with " << hunting << " monsters hunting";
 }
 

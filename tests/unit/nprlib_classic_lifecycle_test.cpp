@@ -11,56 +11,12 @@
 #include "classic/classic_renderer.h"
 #include "nprlib_test_scene.h"
 #include "nprlib_test_support.h"
-
-namespace {
-
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-
-void* counted_allocation(std::size_t bytes) {
-    if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1);
-    if (void* p = std::malloc(bytes ? bytes : 1)) return p;
-    throw std::bad_alloc();
-}
-
-}  // namespace
-
-void* operator new(std::size_t bytes) {
-    return counted_allocation(bytes);
-}
-void* operator new[](std::size_t bytes) {
-    return counted_allocation(bytes);
-}
-void* operator new(std::size_t bytes, const std::nothrow_t&) noexcept {
-    try {
-        return counted_allocation(bytes);
-    } catch (...) {
-        return nullptr;
-    }
-}
-void* operator new[](std::size_t bytes, const std::nothrow_t&) noexcept {
-    try {
-        return counted_allocation(bytes);
-    } catch (...) {
-        return nullptr;
-    }
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
+#include "support/allocation_counter.h"
 
 namespace nq::npr::test {
 namespace {
 
+using ::nq::test::g_allocations;
 using classic::ClassicRenderer;
 
 class ClassicLifecycleTest : public GlSuiteTest<ClassicLifecycleTest> {
@@ -171,20 +127,18 @@ TEST_F(ClassicLifecycleTest, SteadyStateFramesDoNotAllocate) {
     glFinish();
 
     const int rebuilds_before = renderer.models().find(1)->brush->lightmap_rebuilds();
-    g_allocations = 0;
-    g_counting = true;
+    const long before = g_allocations.load();
     for (int n = 14; n < 28; ++n) scene.draw(renderer, *gl_, n);
-    g_counting = false;
+    const long allocated = g_allocations.load() - before;
     glFinish();
-    EXPECT_EQ(g_allocations.load(), 0);
+    EXPECT_EQ(allocated, 0);
     // Lightmaps were rebuilt and uploaded in those frames (the moving light, the style).
     EXPECT_GT(renderer.models().find(1)->brush->lightmap_rebuilds(), rebuilds_before + 14);
 
-    // The counter does count: one allocation while counting is one.
-    g_counting = true;
+    // The counter does count: one allocation is one.
+    const long before_probe = g_allocations.load();
     auto probe = std::make_unique<int>(1);
-    g_counting = false;
-    EXPECT_EQ(g_allocations.load(), 1);
+    EXPECT_EQ(g_allocations.load() - before_probe, 1);
 
     // The frames really drew (not an empty pass that trivially allocates nothing).
     EXPECT_GT(coverage(gl_->pixels(), {}).count, 5000);

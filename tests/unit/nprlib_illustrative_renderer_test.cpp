@@ -17,13 +17,13 @@
 #include "illustrative/illustrative_renderer.h"
 #include "nprlib_test_scene.h"
 #include "nprlib_test_support.h"
-#include "render_allocation_counter.h"  // replaces operator new for this executable
+#include "support/allocation_counter.h"  // replaces operator new for this executable
 
 namespace nq::npr::test {
 namespace {
 
 using illustrative::IllustrativeRenderer;
-using render_test::g_allocations;
+using ::nq::test::g_allocations;
 
 // The files the test engine serves (path -> bytes); a C callback cannot capture, so they live
 // here, filled by each test.

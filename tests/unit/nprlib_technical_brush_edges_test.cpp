@@ -5,7 +5,7 @@
 // the map's data shows); then the edges drawn offscreen: ridge, valley and silhouette
 // colours where this file's own projection puts the box's edges, nothing on hidden ones, the
 // ridge colour from the texture's smallest mip, no allocation per frame, and the time per frame.
-#include "render_allocation_counter.h"  // replaces operator new for this executable
+#include "support/allocation_counter.h"  // replaces operator new for this executable
 
 #include <gtest/gtest.h>
 
@@ -1306,7 +1306,7 @@ TEST_F(BrushEdgeDrawTest, StartMapWorldEdgesDrawWithoutAllocatingAndReportTheirC
     EXPECT_GT(target.drawn_pixels(), 500);
 
     constexpr int kFrames = 20;
-    const long allocations_before = nq::render_test::g_allocations.load();
+    const long allocations_before = ::nq::test::g_allocations.load();
     const auto start_time = std::chrono::steady_clock::now();
     for (int i = 0; i < kFrames; ++i) {
         drawer_.draw_world(view, uniforms, *built, *mesh_, settings);
@@ -1316,7 +1316,7 @@ TEST_F(BrushEdgeDrawTest, StartMapWorldEdgesDrawWithoutAllocatingAndReportTheirC
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_time)
             .count() /
         kFrames;
-    EXPECT_EQ(nq::render_test::g_allocations.load(), allocations_before);
+    EXPECT_EQ(::nq::test::g_allocations.load(), allocations_before);
 
     const auto cpu_start = std::chrono::steady_clock::now();
     size_t listed = 0;

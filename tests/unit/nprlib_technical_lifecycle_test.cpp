@@ -13,13 +13,13 @@
 
 #include "nprlib_test_scene.h"
 #include "nprlib_test_support.h"
-#include "render_allocation_counter.h"  // replaces operator new for this executable
+#include "support/allocation_counter.h"  // replaces operator new for this executable
 #include "technical/technical_renderer.h"
 
 namespace nq::npr::test {
 namespace {
 
-using render_test::g_allocations;
+using ::nq::test::g_allocations;
 using technical::TechnicalRenderer;
 
 const glm::vec3 kEye(64.0f, 64.0f, 80.0f);  // Scene::draw's camera

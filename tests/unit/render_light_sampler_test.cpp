@@ -15,7 +15,7 @@
 #include "render/light_smoother.h"
 #include "render/lightmap_probe.h"
 #include "render/surface_reflectivity.h"
-#include "render_allocation_counter.h"
+#include "support/allocation_counter.h"
 #include "render_test_support.h"
 #include "support/synth_bsp.h"
 
@@ -418,14 +418,14 @@ TEST(RenderLightSampler, SamplingAllocatesNothing) {
     LightSmoother smoother;
     LightListSmoother list;
     size_t with_lights = 0;
-    const long before = render_test::g_allocations.load();
+    const long before = ::nq::test::g_allocations.load();
     for (const glm::vec3& p : points) {
         sampler.sample({p}, styles, {&dlight, 1}, light, &strongest);
         smoother.update(light, 0.01f, light);
         list.update(strongest, 0.01f, light);
         with_lights += light.num_lights > 0;
     }
-    EXPECT_EQ(render_test::g_allocations.load(), before);
+    EXPECT_EQ(::nq::test::g_allocations.load(), before);
     EXPECT_GT(with_lights, 0u);
 }
 

@@ -10,7 +10,7 @@
 #include "formats/entities.h"
 #include "render/view_transform.h"
 #include "render/world_culler.h"
-#include "render_allocation_counter.h"
+#include "support/allocation_counter.h"
 #include "render_test_support.h"
 #include "support/synth_bsp.h"
 
@@ -281,7 +281,7 @@ TEST(RenderWorldCuller, NoAllocationPerFrameAfterWarmUp) {
         frustums.push_back(frustum_for(eye, {0, float(yaw), 0}));
     culler.cull(eye, frustums[0], out);  // warm-up
 
-    const long before = render_test::g_allocations.load();
+    const long before = ::nq::test::g_allocations.load();
     uint32_t total = 0;
     for (int frame = 0; frame < 200; ++frame) {
         const Frustum& f = frustums[size_t(frame) % frustums.size()];
@@ -289,11 +289,11 @@ TEST(RenderWorldCuller, NoAllocationPerFrameAfterWarmUp) {
         total += start_culler.cull(start_eye, f, start_out);
         culler.box_potentially_visible(eye - 16.0f, eye + 16.0f);
     }
-    EXPECT_EQ(render_test::g_allocations.load(), before);
+    EXPECT_EQ(::nq::test::g_allocations.load(), before);
     EXPECT_GT(total, 0u);
     // The counter works: a vector allocates.
     { std::vector<int> v(3); }
-    EXPECT_GT(render_test::g_allocations.load(), before);
+    EXPECT_GT(::nq::test::g_allocations.load(), before);
 }
 
 // The synthetic box rooms (BSP29, BSP2, 2PSB, a missing texture, no PVS): from the player start

@@ -2,7 +2,7 @@
 // crate, a bouncing grenade and a chasing monster over a few seconds of frames.
 #include <gtest/gtest.h>
 
-#include "render_allocation_counter.h"
+#include "support/allocation_counter.h"
 #include "server/monster_move.h"
 #include "server/player_move.h"
 #include "unit/server_physics_fixture.h"
@@ -48,9 +48,9 @@ TEST(ServerPhysicsAlloc, FramesAllocateNothing) {
         ASSERT_TRUE(level.frame());
     };
     for (int i = 0; i < 10; ++i) frame(i);
-    const long before = render_test::g_allocations.load();
+    const long before = ::nq::test::g_allocations.load();
     for (int i = 10; i < 300; ++i) frame(i);
-    EXPECT_EQ(render_test::g_allocations.load() - before, 0);
+    EXPECT_EQ(::nq::test::g_allocations.load() - before, 0);
     EXPECT_LT(level.origin(pusher)[1], -60 * 4);  // it did move
 }
 

@@ -20,7 +20,7 @@
 #include "server/world.h"
 #include "support/synth_progs.h"
 #include "support/test_data.h"
-#include "unit/render_allocation_counter.h"
+#include "support/allocation_counter.h"
 #include "vm/opcodes.h"
 #include "vm/progs.h"
 #include "vm/vm.h"
@@ -826,9 +826,9 @@ TEST(ServerWorld, LinkingTracingAndTouchingDoNotAllocate) {
         env->world->test_entity_position(player);
     };
     frame(0);
-    const long before = render_test::g_allocations.load();
+    const long before = ::nq::test::g_allocations.load();
     for (int i = 1; i < 200; ++i) frame(i);
-    EXPECT_EQ(render_test::g_allocations.load() - before, 0);
+    EXPECT_EQ(::nq::test::g_allocations.load() - before, 0);
     EXPECT_EQ(env->count(), 200);
 }
 

@@ -9,7 +9,7 @@
 
 #include "common/file_io.h"
 #include "formats/bsp.h"
-#include "render_allocation_counter.h"
+#include "support/allocation_counter.h"
 #include "sound/client_sound_feed.h"
 #include "sound/sound_system.h"
 #include "support/synth_wav.h"
@@ -377,14 +377,14 @@ TEST(SoundMixer, NoAllocationPerFrameWhileSoundsPlay) {
     s.fields = {{100, 0, 0}, 1, 200, 1.0f};
     ASSERT_FALSE(rig.client.apply(s));
     rig.frame();
-    const long before = render_test::g_allocations.load();
+    const long before = ::nq::test::g_allocations.load();
     for (int f = 0; f < 200; ++f) {
         ASSERT_FALSE(
             rig.client.apply(sound_message(5 + f % 7, 1 + f % 3, 1, {float(f), 20, 0}, 255, 1)));
         rig.listener.origin = {float(f % 50), 0, 0};
         rig.frame();
     }
-    EXPECT_EQ(render_test::g_allocations.load() - before, 0);
+    EXPECT_EQ(::nq::test::g_allocations.load() - before, 0);
     EXPECT_GT(playing_dynamics(*rig.sound), 1u);
 }
 

@@ -1,34 +1,34 @@
 // Counts every global operator new of the test binary that includes it, to check that per-frame
-// code allocates nothing. Replaces the global allocation functions: include it in exactly one
-// file of a test executable.
+// code allocates nothing (read nq::test::g_allocations before and after the code). Replaces the
+// global allocation functions: include it in exactly one file of a test executable.
 #pragma once
 
 #include <atomic>
 #include <cstdlib>
 #include <new>
 
-namespace nq::render_test {
+namespace nq::test {
 inline std::atomic<long> g_allocations{0};
 }
 
 void* operator new(std::size_t n) {
-    ++nq::render_test::g_allocations;
+    ++nq::test::g_allocations;
     if (void* p = std::malloc(n ? n : 1)) return p;
     throw std::bad_alloc();
 }
 void* operator new[](std::size_t n) {
-    ++nq::render_test::g_allocations;
+    ++nq::test::g_allocations;
     if (void* p = std::malloc(n ? n : 1)) return p;
     throw std::bad_alloc();
 }
 // The nothrow forms too (std::stable_sort's buffer, LLVM inside Mesa): their memory comes back
 // through the plain operator delete below, so it must come from malloc as well.
 void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-    ++nq::render_test::g_allocations;
+    ++nq::test::g_allocations;
     return std::malloc(n ? n : 1);
 }
 void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-    ++nq::render_test::g_allocations;
+    ++nq::test::g_allocations;
     return std::malloc(n ? n : 1);
 }
 // GCC 12 inlines these replacements where a `new` expression's pointer is deleted and then
