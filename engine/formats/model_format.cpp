@@ -58,7 +58,8 @@ std::string describe_model_magic(std::span<const uint8_t> bytes) {
     const bool printable = std::all_of(bytes.begin(), bytes.begin() + std::ptrdiff_t(n),
                                        [](uint8_t c) { return std::isprint(c) != 0; });
     std::string text = "first bytes ";
-    if (printable) return text + "\"" + std::string(bytes.begin(), bytes.begin() + std::ptrdiff_t(n)) + "\"";
+    if (printable)
+        return text + "\"" + std::string(bytes.begin(), bytes.begin() + std::ptrdiff_t(n)) + "\"";
     for (size_t i = 0; i < n; ++i) {
         char hex[4];
         std::snprintf(hex, sizeof hex, "%02x", bytes[i]);

@@ -6,10 +6,10 @@
 
 #include "app/live_game.h"
 #include "common/file_io.h"
-#include "support/allocation_counter.h"
 #include "server/monster_waking.h"
 #include "server/server_commands.h"
 #include "server/server_level.h"
+#include "support/allocation_counter.h"
 #include "support/data_server_host.h"
 #include "support/test_data.h"
 

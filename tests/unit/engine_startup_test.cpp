@@ -153,8 +153,8 @@ struct BrokenLevelGame {
         write_text(base + "/broken/quake.rc", quake_rc);
     }
     std::vector<std::string> args(std::initializer_list<std::string> more) const {
-        std::vector<std::string> a{"-userdir", user, "-basedir", base, "-game", "broken",
-                                   "-width", "160", "-height", "120"};
+        std::vector<std::string> a{"-userdir", user, "-basedir", base, "-game", "broken"};
+        a.insert(a.end(), {"-width", "160", "-height", "120"});
         a.insert(a.end(), more);
         return a;
     }

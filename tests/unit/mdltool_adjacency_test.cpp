@@ -11,6 +11,7 @@
 
 #include "common/file_io.h"
 #include "support/engine_run.h"
+#include "support/json_checks.h"
 #include "support/raw_bytes.h"
 #include "support/synth_mdl.h"
 #include "support/synth_pak.h"
@@ -21,6 +22,7 @@ namespace fs = std::filesystem;
 namespace nq {
 namespace {
 
+using test::looks_like_json_object;
 using test::TempDir;
 using ToolRun = test::ProcessResult;
 
@@ -51,32 +53,6 @@ size_t lines_starting_with(const std::string& text, const std::string& prefix) {
     size_t n = 0;
     for (std::string line; std::getline(in, line);) n += line.rfind(prefix, 0) == 0;
     return n;
-}
-
-// Brackets balanced and nested outside strings, one top-level object.
-bool looks_like_json_object(const std::string& text) {
-    std::vector<char> open;
-    bool in_string = false;
-    const size_t first = text.find_first_not_of(" \n");
-    if (first == std::string::npos || text[first] != '{') return false;
-    for (size_t i = first; i < text.size(); ++i) {
-        const char c = text[i];
-        if (in_string) {
-            if (c == '\\') ++i;
-            if (c == '"') in_string = false;
-            continue;
-        }
-        if (c == '"') {
-            in_string = true;
-        } else if (c == '{' || c == '[') {
-            open.push_back(c);
-        } else if (c == '}' || c == ']') {
-            if (open.empty() || open.back() != (c == '}' ? '{' : '[')) return false;
-            open.pop_back();
-            if (open.empty()) return text.find_first_not_of(" \n", i + 1) == std::string::npos;
-        }
-    }
-    return false;
 }
 
 std::string progs_dir() {

@@ -16,8 +16,8 @@
 namespace nq::npr::test {
 namespace {
 
-using ::nq::test::g_allocations;
 using classic::ClassicRenderer;
+using ::nq::test::g_allocations;
 
 class ClassicLifecycleTest : public GlSuiteTest<ClassicLifecycleTest> {
   protected:

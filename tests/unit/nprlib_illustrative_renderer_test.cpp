@@ -49,8 +49,9 @@ int differing(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
 }
 
 bool logged(const std::string& needle) {
-    return std::any_of(captured_log().begin(), captured_log().end(),
-                       [&](const std::string& line) { return line.find(needle) != std::string::npos; });
+    return std::any_of(captured_log().begin(), captured_log().end(), [&](const std::string& line) {
+        return line.find(needle) != std::string::npos;
+    });
 }
 
 class IllustrativeRendererTest : public GlSuiteTest<IllustrativeRendererTest> {

@@ -15,8 +15,8 @@
 #include "render/light_smoother.h"
 #include "render/lightmap_probe.h"
 #include "render/surface_reflectivity.h"
-#include "support/allocation_counter.h"
 #include "render_test_support.h"
+#include "support/allocation_counter.h"
 #include "support/synth_bsp.h"
 
 namespace nq {

@@ -174,9 +174,9 @@ TEST(RenderModelCache, AFileThatIsNoModelIsAPlaceholderNamingItsFirstBytes) {
     const std::vector<uint8_t> raw = render_test::lq1_bytes(wav);
     ASSERT_GE(raw.size(), 4u);
     const std::string magic(raw.begin(), raw.begin() + 4);  // "RIFF" in any WAV
-    EXPECT_TRUE(any_warning_names(cache.take_warnings(),
-                                  "progs/shotgun.mdl: offset 0: not a model (first bytes \"" +
-                                      magic + "\""));
+    EXPECT_TRUE(any_warning_names(
+        cache.take_warnings(),
+        "progs/shotgun.mdl: offset 0: not a model (first bytes \"" + magic + "\""));
 }
 
 TEST(RenderModelCache, UnprintableOrNoFirstBytesAreNamedInHexOrAsEmpty) {

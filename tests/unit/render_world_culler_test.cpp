@@ -10,8 +10,8 @@
 #include "formats/entities.h"
 #include "render/view_transform.h"
 #include "render/world_culler.h"
-#include "support/allocation_counter.h"
 #include "render_test_support.h"
+#include "support/allocation_counter.h"
 #include "support/synth_bsp.h"
 
 namespace nq {
@@ -194,9 +194,9 @@ TEST(RenderWorldCuller, SurfacesComeFrontToBackGroupedByTexture) {
     }
     ASSERT_EQ(visible.size(), expected.size());
     for (size_t i = 0; i < visible.size(); ++i) {
-        ASSERT_EQ(visible[i], expected[i]) << "at " << i << " of " << visible.size() << ", texture "
-                                           << texture_of(visible[i]) << " vs "
-                                           << texture_of(expected[i]);
+        ASSERT_EQ(visible[i], expected[i])
+            << "at " << i << " of " << visible.size() << ", texture " << texture_of(visible[i])
+            << " vs " << texture_of(expected[i]);
     }
 }
 

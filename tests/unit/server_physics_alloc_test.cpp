@@ -2,9 +2,9 @@
 // crate, a bouncing grenade and a chasing monster over a few seconds of frames.
 #include <gtest/gtest.h>
 
-#include "support/allocation_counter.h"
 #include "server/monster_move.h"
 #include "server/player_move.h"
+#include "support/allocation_counter.h"
 #include "unit/server_physics_fixture.h"
 
 namespace nq::server::test {

@@ -9,9 +9,9 @@
 
 #include "common/file_io.h"
 #include "formats/bsp.h"
-#include "support/allocation_counter.h"
 #include "sound/client_sound_feed.h"
 #include "sound/sound_system.h"
+#include "support/allocation_counter.h"
 #include "support/synth_wav.h"
 #include "support/test_data.h"
 
