@@ -133,13 +133,13 @@ void Engine::swap_plugin(const std::string& name) {
 }
 
 void Engine::start_demo(const std::string& name, DemoMode mode) {
+    // Played or not, a demo the command line asked for is its job (and keeps the loop off).
+    demo_is_job_ = command_line_job_;
     std::string why = demo_->start(name, mode);
     if (!why.empty()) {
         if (mode != DemoMode::TimeDemo) return print(why);
-        demo_is_job_ = command_line_job_;
         return timedemo_failed(name, why);
     }
-    demo_is_job_ = command_line_job_;
     show_showroom(false);
     demo_loop_.set_playing(false);  // a demo chosen by hand ends the attract loop
     // The rest of the command line ("+timedemo demo +quit") waits for the demo to end.

@@ -202,5 +202,18 @@ TEST(EngineStartup, AFailedCommandLineTimedemoLeavesTheDemoLoopOff) {
     EXPECT_NE(r.out.find("waited"), std::string::npos) << r.out;
 }
 
+TEST(EngineStartup, AFailedCommandLinePlaydemoLeavesTheDemoLoopOff) {
+    TempDir dir;
+    BrokenLevelGame game(dir, "stuffcmds\nstartdemos demo demo2\n" + wait_then_quit(60));
+    ProcessResult r = run_nprquake(game.args({"+playdemo", "nosuchdemo"}), dir.path(), 180);
+    ASSERT_EQ(r.exit_code, 0) << r.describe();
+    EXPECT_EQ(sanitizer_report(r.out + r.err), "");
+    EXPECT_FALSE(lines_containing(r.out, "nosuchdemo").empty()) << r.out;
+    EXPECT_NE(r.out.find("demo(s) in loop"), std::string::npos) << r.out;
+    // As Quake (its demonum -1): the loop was set and not started, so no demo met the level.
+    EXPECT_EQ(lines_starting_with(r.out, "cannot load level"), 0u) << r.out;
+    EXPECT_NE(r.out.find("waited"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace nq
