@@ -4,10 +4,6 @@ namespace nq::npr::adjacency {
 
 namespace {
 
-OpenMesh::VertexHandle handle(uint32_t v) {
-    return OpenMesh::VertexHandle(static_cast<int>(v));
-}
-
 // The MDL vertex at mesh vertex `v` in face `f` (the file's texture coordinates).
 uint32_t corner_mdl_vertex(const BuiltMesh& built, uint32_t f, uint32_t v) {
     for (int k = 0; k < 3; ++k) {
@@ -32,23 +28,14 @@ MeshEdge describe_edge(const TriMesh& mesh, OpenMesh::EdgeHandle e) {
     return edge;
 }
 
-void add_face_adjacency(const BuiltMesh& built, uint32_t f, EdgeTable& table) {
-    const TriMesh& mesh = built.mesh;
-    const auto& v = built.face_vertices[f];
-    for (int k = 0; k < 3; ++k) {
-        table.triangles_adjacency.push_back(built.face_corners[f][k]);
-        const auto h = mesh.find_halfedge(handle(v[k]), handle(v[(k + 1) % 3]));
-        const auto o = mesh.opposite_halfedge_handle(h);
-        table.face_edges[f][k] = uint32_t(mesh.edge_handle(h).idx());
-        if (mesh.is_boundary(o)) {
-            table.triangles_adjacency.push_back(built.face_corners[f][(k + 2) % 3]);
-        } else {
-            const uint32_t g = uint32_t(mesh.face_handle(o).idx());
-            const uint32_t across =
-                uint32_t(mesh.to_vertex_handle(mesh.next_halfedge_handle(o)).idx());
-            table.triangles_adjacency.push_back(corner_mdl_vertex(built, g, across));
-        }
-    }
+EdgeRecord record_of(const BuiltMesh& built, const MeshEdge& edge) {
+    EdgeRecord record;
+    record.third = corner_mdl_vertex(built, edge.face0, edge.opposite0);
+    record.v0 = corner_mdl_vertex(built, edge.face0, edge.v0);
+    record.v1 = corner_mdl_vertex(built, edge.face0, edge.v1);
+    record.far =
+        edge.boundary() ? record.third : corner_mdl_vertex(built, edge.face1, edge.opposite1);
+    return record;
 }
 
 }  // namespace
@@ -63,16 +50,11 @@ EdgeTable build_edge_table(const BuiltMesh& built) {
     const TriMesh& mesh = built.mesh;
     EdgeTable table;
     table.edges.reserve(mesh.n_edges());
-    table.edge_lines.reserve(mesh.n_edges() * 2);
+    table.records.reserve(mesh.n_edges());
     for (const auto e : mesh.edges()) {
-        const MeshEdge edge = describe_edge(mesh, e);
-        table.edges.push_back(edge);
-        table.edge_lines.push_back(corner_mdl_vertex(built, edge.face0, edge.v0));
-        table.edge_lines.push_back(corner_mdl_vertex(built, edge.face0, edge.v1));
+        table.edges.push_back(describe_edge(mesh, e));
+        table.records.push_back(record_of(built, table.edges.back()));
     }
-    table.face_edges.resize(built.face_vertices.size());
-    table.triangles_adjacency.reserve(built.face_vertices.size() * 6);
-    for (uint32_t f = 0; f < built.face_vertices.size(); ++f) add_face_adjacency(built, f, table);
     return table;
 }
 

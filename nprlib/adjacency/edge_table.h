@@ -1,15 +1,13 @@
-// Per-edge adjacency of a built mesh, computed once per model, in forms a renderer can use
-// directly:
-//   edges               each edge's two vertices and its one or two faces;
-//   triangles_adjacency 6 MDL vertex indices per face for GL_TRIANGLES_ADJACENCY;
-//   edge_lines          2 MDL vertex indices per edge for GL_LINES (draw any subset);
-//   face_edges          each face's three edges.
-// GPU indices are MDL vertex indices, so they index a vertex buffer laid out like the file's
-// vertices (texture coordinates included); faces wind counter-clockwise seen from outside
-// (GL's default front face; Quake's files store the opposite winding).
+// Per-edge adjacency of a built mesh, computed once per model:
+//   edges    each edge's two mesh vertices, its one or two faces and their far corners (the
+//            mesh's own numbering: for pose geometry, checks and reports);
+//   records  the same edges in MDL vertex indices, the form a renderer tests on a blended
+//            pose every frame (feature_edges.h): the technical style draws exactly these.
+// MDL indices index a vertex buffer laid out like the file's vertices (texture coordinates
+// included); faces wind counter-clockwise seen from outside (GL's default front face; Quake's
+// files store the opposite winding).
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -26,14 +24,17 @@ struct MeshEdge {
     bool boundary() const { return face1 == kNone; }
 };
 
+// One edge in MDL vertex indices: face0 is (v0, v1, third), its neighbour (v1, v0, far), both
+// counter-clockwise seen from outside. On an open border there is no neighbour and far is
+// face0's own third corner.
+struct EdgeRecord {
+    uint32_t third = 0, v0 = 0, v1 = 0, far = 0;
+    bool border() const { return far == third; }
+};
+
 struct EdgeTable {
     std::vector<MeshEdge> edges;
-    // Per face: corner0, across edge 0-1, corner1, across edge 1-2, corner2, across edge 2-0.
-    // On a boundary edge the "across" vertex is the face's own third corner, so a geometry
-    // shader sees the face itself reversed there and always finds the edge on the outline.
-    std::vector<uint32_t> triangles_adjacency;
-    std::vector<uint32_t> edge_lines;                 // per edge: MDL vertices at v0 and v1
-    std::vector<std::array<uint32_t, 3>> face_edges;  // edge k joins corners k and k + 1
+    std::vector<EdgeRecord> records;  // records[e] is edges[e]
 
     uint32_t boundary_edges() const;
 };

@@ -33,7 +33,7 @@ std::vector<std::array<uint32_t, 3>> welded_in_file_order(const std::vector<Soup
 
 }  // namespace
 
-ModelAdjacency recover_adjacency(const nqr_alias_model& model, double min_manifold_share) {
+ModelAdjacency recover_adjacency(const nqr_alias_model& model, const RecoveryOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const AliasSource source(model);
     ModelAdjacency out;
@@ -64,8 +64,9 @@ ModelAdjacency recover_adjacency(const nqr_alias_model& model, double min_manifo
     out.mdl_to_mesh_vertex = mdl_to_mesh(out.mesh, source.num_vertices());
 
     out.edges = build_edge_table(out.mesh);
-    out.geometry = compute_pose_geometry(source, out.mesh, out.edges);
-    out.verdict = judge_adjacency(s, out.problems, min_manifold_share);
+    out.file = describe_file_triangles(source, out.mesh);
+    if (options.pose_geometry) out.geometry = compute_pose_geometry(source, out.mesh, out.edges);
+    out.verdict = judge_adjacency(s, out.problems, options.min_manifold_share);
     s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
 }

@@ -1,9 +1,11 @@
 // Adjacency recovery for one alias model, done once at load time:
 //   weld (weld.h) -> drop degenerates and duplicates (triangle_filter.h) -> orient
 //   (orientation.h) -> OpenMesh half-edge mesh with vertex splits (mesh_builder.h) -> checks
-//   (mesh_checks.h) -> edge table and GPU index buffers (edge_table.h) -> per-pose face planes
-//   and dihedral angles (pose_geometry.h) -> verdict (verdict.h).
-// Per frame a renderer only reads the result (edge_queries.h).
+//   (mesh_checks.h) -> edge table with the records a renderer tests per frame (edge_table.h)
+//   -> the file's triangles with their side twins and seam representatives
+//   (file_triangles.h) -> verdict (verdict.h); per-pose face planes and dihedral angles
+//   (pose_geometry.h) only when asked for (reports, tests).
+// Per frame a renderer classifies the records on its blended pose (feature_edges.h).
 #pragma once
 
 #include <cstdint>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "adjacency/edge_table.h"
+#include "adjacency/file_triangles.h"
 #include "adjacency/mesh_builder.h"
 #include "adjacency/pose_geometry.h"
 #include "adjacency/recovery_stats.h"
@@ -26,14 +29,19 @@ struct ModelAdjacency {
     // face_vertices give every face's exact corners.
     std::vector<uint32_t> mdl_to_mesh_vertex;
     EdgeTable edges;
-    PoseGeometry geometry;
+    FileTriangles file;
+    PoseGeometry geometry;  // empty unless RecoveryOptions::pose_geometry
     RecoveryStats stats;
     std::vector<std::string> problems;  // from check_mesh: empty when every check passed
     Verdict verdict;
 };
 
-ModelAdjacency recover_adjacency(const nqr_alias_model& model,
-                                 double min_manifold_share = kMinManifoldShare);
+struct RecoveryOptions {
+    double min_manifold_share = kMinManifoldShare;  // the verdict's threshold (verdict.h)
+    bool pose_geometry = false;  // every pose's face planes and dihedrals: a renderer needs none
+};
+
+ModelAdjacency recover_adjacency(const nqr_alias_model& model, const RecoveryOptions& options = {});
 
 // "adjacency: NAME: true silhouettes and creases (99.1% of 540 edges manifold and ...)".
 std::string verdict_log_line(const std::string& model_name, const ModelAdjacency& adjacency);

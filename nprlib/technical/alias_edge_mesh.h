@@ -1,20 +1,14 @@
 // An alias model's edges for the technical style, built once at registration from the recovered
 // adjacency (adjacency::recover_adjacency), and searched on the CPU every frame for the entity's
 // blended pose and the true eye (Gooch et al. 1999, Raskar 2001):
-//   - true edges, one record per mesh edge (face0's third corner, the edge's ends v0 and v1,
-//     the neighbour's far corner; faces wind counter-clockwise seen from outside, so face0 is
-//     (v0, v1, third) and the neighbour (v1, v0, far)). An edge is a silhouette where one face
-//     looks at the eye and the other does not; a crease where the faces turn by more than the
-//     crease angle (a ridge when convex, a valley when concave) and one of them is seen. Open
-//     borders (the far corner is face0's own third corner) outline from either side;
+//   - true edges: the adjacency's edge records, classified by adjacency::classify_edge
+//     (feature_edges.h: silhouettes, open borders, ridges and valleys);
 //   - the paper's thick back-face lines, for models whose adjacency is not trustworthy: the
-//     edges of every back-facing triangle of the file (no adjacency needed), less those it
-//     shares, at the same welded positions and with opposite winding, with exactly one other
-//     triangle that faces away too: such an edge lies on the far side of the model, where front
-//     faces hide it (only through a hole in an open model could it show). Welded positions,
-//     not the file's indices, so that skin seams (vertices the file duplicates) do not count
-//     as open edges.
-// The adjacency verdict says whether true edges can be trusted. No GL here: AliasEdgeDrawer
+//     edges of every back-facing triangle of the file (no adjacency needed), less the sides it
+//     shares with a twin (adjacency::FileTriangles) that faces away too: such a side lies on
+//     the far side of the model, where front faces hide it.
+// The adjacency verdict says whether true edges can be trusted. This class keeps what drawing
+// needs and does the shading-independent part of the search; no GL here: AliasEdgeDrawer
 // turns what find_edges returns into quads.
 #pragma once
 
@@ -27,6 +21,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "adjacency/edge_table.h"
+#include "adjacency/feature_edges.h"
 #include "adjacency/recovery_stats.h"
 #include "adjacency/verdict.h"
 #include "nqr_renderer.h"
@@ -42,6 +38,8 @@ struct EdgeQuery {
     bool backface_lines = false;  // back-facing triangles' edges, in place of true silhouettes
     float cos_crease = 0.5f;      // an edge is a crease when its normals' cosine is below this
     bool any() const { return silhouettes || creases || backface_lines; }
+    // The adjacency's test for the true edges this query asks for.
+    adjacency::FeatureTest feature_test() const;
 };
 
 struct FoundEdge {
@@ -86,12 +84,10 @@ class AliasEdgeMesh {
                              std::vector<FoundEdge>& out) const;
 
     uint32_t vertex_count_ = 0;
-    std::vector<std::array<uint32_t, 4>> edges_;  // (third, v0, v1, far) per mesh edge
-    std::vector<Triangle> triangles_;
-    std::vector<Triangle> shadow_triangles_;
-    // Per triangle side k (from corner k to k + 1): the one triangle running that side the
-    // other way round, or -1 when there is none or the side has more than two triangles.
+    std::vector<adjacency::EdgeRecord> edges_;
+    std::vector<Triangle> triangles_;  // adjacency::FileTriangles, with its twins
     std::vector<std::array<int32_t, 3>> twins_;
+    std::vector<Triangle> shadow_triangles_;
     mutable std::vector<uint8_t> facing_away_;  // scratch of find_backface_lines
     std::vector<uint32_t> seam_representatives_;
     adjacency::RecoveryStats stats_;

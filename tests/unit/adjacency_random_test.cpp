@@ -61,8 +61,19 @@ TEST(AdjacencyRandom, EverySoupGivesACheckedManifoldMesh) {
                 }
             }
         }
-        ASSERT_EQ(a.edges.triangles_adjacency.size(), 6 * a.mesh.face_corners.size());
-        ASSERT_EQ(a.geometry.planes.size(), size_t(m.num_poses) * a.stats.mesh_faces);
+        // The records a renderer tests per frame index real vertices and mark the borders.
+        ASSERT_EQ(a.edges.records.size(), a.edges.edges.size());
+        for (size_t e = 0; e < a.edges.records.size(); ++e) {
+            const EdgeRecord& r = a.edges.records[e];
+            for (uint32_t v : {r.third, r.v0, r.v1, r.far}) ASSERT_LT(v, m.num_vertices);
+            ASSERT_EQ(r.border(), a.edges.edges[e].boundary());
+        }
+        ASSERT_LE(a.file.triangles.size(), m.num_triangles);
+        ASSERT_EQ(a.file.twins.size(), a.file.triangles.size());
+        ASSERT_EQ(a.file.seam_representatives.size(), m.num_vertices);
+        for (uint32_t v = 0; v < m.num_vertices; ++v) {
+            ASSERT_LE(a.file.seam_representatives[v], v);
+        }
     }
 }
 

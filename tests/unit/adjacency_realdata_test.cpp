@@ -169,8 +169,11 @@ TEST(AdjacencyRealData, ClosedMonsterGetsTrueEdges) {
     const ModelAdjacency a = recover_adjacency(data->abi());
     EXPECT_EQ(a.stats.mesh.boundary, 0u);
     EXPECT_EQ(a.verdict.style, EdgeStyle::true_edges);
-    // Every pose's face planes were precomputed.
-    EXPECT_EQ(a.geometry.planes.size(), size_t(data->abi().num_poses) * a.stats.mesh_faces);
+    // A renderer's recovery keeps no per-pose geometry; asked for, every pose's face planes.
+    EXPECT_TRUE(a.geometry.planes.empty());
+    const ModelAdjacency with_geometry = recover_adjacency(data->abi(), {kMinManifoldShare, true});
+    EXPECT_EQ(with_geometry.geometry.planes.size(),
+              size_t(data->abi().num_poses) * with_geometry.stats.mesh_faces);
 }
 
 }  // namespace

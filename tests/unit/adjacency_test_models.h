@@ -71,7 +71,17 @@ class SyntheticAlias {
         return model_;
     }
 
-    npr::adjacency::ModelAdjacency recover() { return npr::adjacency::recover_adjacency(view()); }
+    npr::adjacency::ModelAdjacency recover(const npr::adjacency::RecoveryOptions& options = {}) {
+        return npr::adjacency::recover_adjacency(view(), options);
+    }
+    // Model-space positions of every vertex in `pose`, computed here from the packed bytes.
+    std::vector<glm::vec3> positions(uint32_t pose) const {
+        std::vector<glm::vec3> out;
+        for (const Packed& p : poses_[pose]) {
+            out.push_back(scale_ * glm::vec3(p[0], p[1], p[2]) + origin_);
+        }
+        return out;
+    }
 
   private:
     static constexpr float kInterval = 0.1f;

@@ -9,6 +9,8 @@
 #include <memory>
 #include <numbers>
 
+#include "adjacency/feature_edges.h"
+#include "adjacency/model_adjacency.h"
 #include "classic/alias_drawer.h"
 #include "classic/alias_model_gpu.h"
 #include "classic/frame_view.h"
@@ -480,6 +482,47 @@ TEST_F(TechnicalEdgesTest, CubeCreasesAreRidgesAndStepsInnerEdgeIsAValley) {
     EXPECT_EQ(probe(step_image, step_camera, {8, 0, 0}), kRidge);   // C: the lower step's lip
     EXPECT_EQ(probe(step_image, step_camera, {0, 0, 8}), kRidge);   // E: the upper step's lip
     EXPECT_GT(step_image.count(kValley), 40);
+}
+
+// The technical style draws the creases adjacency::classify_edge finds, with the threshold the
+// adjacency's crease_cosine gives: a change of the threshold there changes the picture. Below 90
+// degrees the corner's three box edges are ridges (a ridge pixel at each one's midpoint), above
+// it there is no crease on the cube at all, in the adjacency's answer and on screen.
+TEST_F(TechnicalEdgesTest, TheCreasesOnScreenAreTheAdjacencyTestsCreases) {
+    TestModel& cube = add_model([](AliasBuilder& b) { make_cube(b, kGrey); });
+    const nqr_alias_model& source = *cube.builder.build();
+    const adjacency::ModelAdjacency adj = adjacency::recover_adjacency(source);
+    nqr_entity entity = fullbright_entity(1);
+    const nqr_camera camera = corner_camera();
+    place_eye(entity, camera);
+    const glm::vec3 eye = glm::make_vec3(entity.eye_model);
+    std::vector<glm::vec3> pose(source.num_vertices);
+    technical::blend_alias_pose(source, entity, pose.data());
+    for (const float degrees : {60.0f, 100.0f}) {
+        adjacency::FeatureTest test;
+        test.cos_crease = adjacency::crease_cosine(degrees);
+        std::vector<adjacency::ClassifiedEdge> found;
+        adjacency::find_feature_edges(adj.edges.records, pose.data(), eye, test, found);
+        std::vector<glm::vec3> ridge_midpoints;
+        for (const adjacency::ClassifiedEdge& e : found) {
+            if (e.kind != adjacency::FeatureEdge::ridge) continue;
+            const adjacency::EdgeRecord& r = adj.edges.records[e.edge];
+            ridge_midpoints.push_back((pose[r.v0] + pose[r.v1]) * 0.5f);
+        }
+        EXPECT_EQ(ridge_midpoints.size(), degrees < 90.0f ? 3u : 0u) << degrees;
+
+        TechnicalSettings settings = plain_settings();
+        settings.edges.crease_angle_degrees = degrees;
+        const Image image = draw(camera, {{&cube, &entity}}, settings);
+        for (const glm::vec3& midpoint : ridge_midpoints) {
+            EXPECT_EQ(probe(image, camera, midpoint), kRidge) << degrees;
+        }
+        if (ridge_midpoints.empty()) {
+            EXPECT_EQ(image.count(kRidge), 0) << degrees;
+        } else {
+            EXPECT_GT(image.count(kRidge), 60) << degrees;
+        }
+    }
 }
 
 TEST_F(TechnicalEdgesTest, DrawingLeavesTheDocumentedGlState) {
