@@ -40,7 +40,8 @@ Engine::Engine(const CommandLine& command_line)
 }
 
 Engine::~Engine() {
-    stop_recording();
+    if (game_) game_->stop_recording();
+    game_.reset();
     menu_.reset();
     sound_.reset();  // the device's callback stops before anything it reads goes
     demo_.reset();
@@ -109,7 +110,6 @@ bool Engine::start() {
         {"scr_menuscale", "1", kCvarArchive,
          "menu scale on Quake's 320x200 menu canvas (limited to what fits the screen)", 1.0f,
          10.0f});
-    register_game_cvars();
     obscurance_cvars_.register_cvars(host_.cvars(), [this](const std::string& t) { print(t); });
     sound_ = std::make_unique<GameSound>(host_, command_line_.has("-nosound"),
                                          [this](std::string_view t) { print(t); });
@@ -204,8 +204,17 @@ bool Engine::start() {
     demo_ = std::make_unique<DemoSession>(vfs_ ? &*vfs_ : nullptr, std::move(callbacks));
     demo_->level().set_palette(palette);  // surface colours for the ambient cube field
     demo_->set_user_dir(user_dir() + "/" + options_.game.value_or("id1"));
-    server_host_ = std::make_unique<EngineServerHost>(host_, vfs_ ? &*vfs_ : nullptr,
-                                                      [this](std::string_view t) { print(t); });
+    GameContext game;
+    game.host = &host_;
+    game.session = demo_.get();
+    game.input = input_.get();
+    game.vfs = vfs_ ? &*vfs_ : nullptr;
+    game.user_game_dir = user_dir() + "/" + options_.game.value_or("id1");
+    game.print = [this](std::string_view t) { print(t); };
+    game.begin_game = [this](std::unique_ptr<LiveGame> g, const std::string& map) {
+        begin_game(std::move(g), map);
+    };
+    game_ = std::make_unique<GameController>(std::move(game));
 
     create_menu();
     register_commands();
@@ -312,7 +321,7 @@ void Engine::frame() {
         if (demo_->live()) {
             // A single-player game waits while the menu or the console is open, as in Quake.
             const bool waiting = menu_->active() || console_->is_open();
-            run_game_frame(waiting ? 0.0 : frame_time, status);
+            status = game_->run_frame(waiting ? 0.0 : frame_time, console_->is_open());
         } else {
             status = demo_->frame(frame_time);
         }
@@ -334,14 +343,8 @@ void Engine::frame() {
         first_frame_seconds_ = seconds() - start_seconds_;
         print("start-up to first frame: " + std::to_string(first_frame_seconds_) + " s");
     }
-    if (map_started_seconds_ >= 0 && demo_->level_ready()) {
-        const double ms = (seconds() - map_started_seconds_) * 1000;
-        print("map " + demo_->name() + ": first frame " + std::to_string(int(ms)) +
-              " ms after the map command");
-        map_started_seconds_ = -1;
-    }
     if (timing) frame_times_.record(seconds() - now);
-    if (game_timing) game_frame_times_.record(seconds() - now);
+    game_->frame_drawn(seconds() - now, game_timing);
     ++frame_count_;
     update_command_line_job();
     if (!timing && cvars_.host_maxfps->value() > 0) {

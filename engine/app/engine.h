@@ -17,7 +17,7 @@
 #include "app/demo_loop.h"
 #include "app/demo_session.h"
 #include "app/engine_menu.h"
-#include "app/engine_server_host.h"
+#include "app/game/game_controller.h"
 #include "app/game_data.h"
 #include "app/host_services.h"
 #include "app/obscurance_cvars.h"
@@ -59,23 +59,6 @@ struct EngineCvars {
     Cvar* vid_width = nullptr;
     Cvar* vid_height = nullptr;
     Cvar* vid_fullscreen = nullptr;
-};
-
-// The game's cvars (Quake's names and defaults), read when a level starts or each frame.
-struct GameCvars {
-    Cvar* skill = nullptr;
-    Cvar* deathmatch = nullptr;
-    Cvar* coop = nullptr;
-    Cvar* sv_protocol = nullptr;
-    Cvar* sv_gravity = nullptr;
-    Cvar* sv_maxspeed = nullptr;
-    Cvar* sv_friction = nullptr;
-    Cvar* sv_edgefriction = nullptr;
-    Cvar* sv_stopspeed = nullptr;
-    Cvar* sv_accelerate = nullptr;
-    Cvar* sv_maxvelocity = nullptr;
-    Cvar* sv_nostep = nullptr;
-    Cvar* sv_seed = nullptr;
 };
 
 class Engine {
@@ -139,23 +122,12 @@ class Engine {
     void release_level_models();
     void show_showroom(bool on);
 
-    // game_commands.cpp
-    void register_game_cvars();
-    void register_game_commands();
-    void register_save_commands();  // save_commands.cpp
-    // A new game on `map`, or (parms carried or restarted) the running game going on there.
-    void start_map(const std::string& map, server::SpawnParms parms);
-    void change_level_if_asked();
-    void run_game_frame(double frame_time, FrameStatus& status);
-    void start_recording(const CommandArgs& args);
-    bool stop_recording();
-    server::ServerSettings server_settings() const;
-    server::ServerLevel* game_level();
-
     // engine_commands.cpp
     void register_commands();
     void start_demo(const std::string& name, DemoMode mode);
     void end_demo();
+    // A game (GameController: map, load) replaces the demo or showroom on screen.
+    void begin_game(std::unique_ptr<LiveGame> game, const std::string& map);
     void pause_demo(const CommandArgs& args);
     // A timedemo ended: its report, or (when it failed) why, and never a frame rate then.
     void finish_timedemo();
@@ -200,8 +172,7 @@ class Engine {
     std::unique_ptr<EngineMenuServices> menu_services_;
     std::unique_ptr<Menu> menu_;  // after hud_ and plugins_, whose pictures and styles it shows
     DemoLoop demo_loop_;
-    std::unique_ptr<EngineServerHost> server_host_;
-    GameCvars game_cvars_;
+    std::unique_ptr<GameController> game_;  // after demo_ and input_, which it plays through
     SceneBuilder scene_;
     ViewState view_state_;
     std::unique_ptr<GameSound> sound_;
@@ -212,7 +183,6 @@ class Engine {
 
     // Timedemo: per-frame times, and the command text that waits for the demo to end.
     FrameTimeRecorder frame_times_;
-    FrameTimeRecorder game_frame_times_{size_t{1} << 16};  // host frames of the running game
     std::string after_demo_text_;
     std::optional<BenchmarkRuns> benchmark_;
     bool command_line_job_ = true;
@@ -225,7 +195,6 @@ class Engine {
     uint64_t frame_count_ = 0;
     bool quit_ = false;
     bool relative_mouse_ = false;       // the mouse turns the view (a game runs, nothing open)
-    double map_started_seconds_ = -1;   // `map` ran: report the time to its first frame
     bool multisampled_screen_ = false;  // occlusion culling is then off
     int exit_status_ = 0;
 };

@@ -43,7 +43,7 @@ void Engine::register_commands() {
     c.add_command(
         "stop",
         [this](const CommandArgs&) {
-            if (!stop_recording()) end_demo();
+            if (!game_->stop_recording()) end_demo();
         },
         "stop recording a demo (or, when none is recorded, the demo being played)");
     c.add_command(
@@ -103,7 +103,6 @@ void Engine::register_commands() {
             for (const auto& p : vfs_->search_paths()) print(p.describe());
         },
         "show the search path");
-    register_game_commands();
 }
 
 // Quake's viewpos, from the messages themselves (not the interpolated view), so a game and
@@ -162,6 +161,12 @@ void Engine::end_demo() {
         after_demo_text_.clear();
     }
     if (timedemo && benchmark_ && !benchmark_->complete() && !quit_) queue_benchmark();
+}
+
+void Engine::begin_game(std::unique_ptr<LiveGame> game, const std::string& map) {
+    if (demo_->active()) end_demo();
+    show_showroom(false);
+    demo_->start_game(std::move(game), map);
 }
 
 void Engine::update_command_line_job() {

@@ -3,8 +3,9 @@
 // between this engine and QuakeSpasm.
 #include <filesystem>
 
-#include "app/engine.h"
+#include "app/game/game_controller.h"
 #include "common/file_io.h"
+#include "fs/vfs.h"
 #include "server/savegame.h"
 #include "server/server_level.h"
 
@@ -31,27 +32,27 @@ std::string save_refusal(const server::ServerLevel& level, Intermission intermis
 
 }  // namespace
 
-void Engine::register_save_commands() {
-    CommandSystem& c = host_.commands();
+void GameController::register_save_commands() {
+    CommandSystem& c = context_.host->commands();
     c.add_command(
         "save",
         [this](const CommandArgs& a) {
             if (a.argc() != 2) return print("save <savename> : save a game");
-            server::ServerLevel* level = game_level();
-            if (!level) return print("Not playing a local game.");
-            if (std::string why = save_refusal(*level, demo_->client().intermission());
+            server::ServerLevel* running = level();
+            if (!running) return print("Not playing a local game.");
+            if (std::string why = save_refusal(*running, context_.session->client().intermission());
                 !why.empty()) {
                 return print(why);
             }
             const std::string name = save_file_name(a.argv(1));
             if (name.empty()) return print("Relative pathnames are not allowed.");
-            const std::string dir = user_dir() + "/" + options_.game.value_or("id1");
+            const std::string& dir = context_.user_game_dir;
             std::error_code ec;
             std::filesystem::create_directories(dir, ec);
             const std::string path = dir + "/" + name;
-            const int skill = demo_->live()->server().settings().skill;
+            const int skill = context_.session->live()->server().settings().skill;
             const std::string text =
-                server::write_savegame(*level, server::savegame_comment(*level), skill);
+                server::write_savegame(*running, server::savegame_comment(*running), skill);
             const std::span<const uint8_t> bytes(reinterpret_cast<const uint8_t*>(text.data()),
                                                  text.size());
             if (std::string why = write_file(path, bytes); !why.empty()) {
@@ -66,26 +67,23 @@ void Engine::register_save_commands() {
             if (a.argc() != 2) return print("load <savename> : load a game");
             const std::string name = save_file_name(a.argv(1));
             if (name.empty()) return print("Relative pathnames are not allowed.");
-            if (!vfs_) return print("load: no game data mounted");
-            const std::string game_dir = user_dir() + "/" + options_.game.value_or("id1");
-            Result<std::vector<uint8_t>> bytes = read_file(game_dir + "/" + name);
-            if (!bytes) bytes = vfs_->read(name);
+            if (!context_.vfs) return print("load: no game data mounted");
+            Result<std::vector<uint8_t>> bytes = read_file(context_.user_game_dir + "/" + name);
+            if (!bytes) bytes = context_.vfs->read(name);
             if (!bytes) return print("load: cannot find " + name);
             const std::string_view text(reinterpret_cast<const char*>(bytes->data()),
                                         bytes->size());
             const Result<server::LoadedGame> saved = server::read_savegame(text, name);
             if (!saved) return print("load: " + saved.error().to_string());
             // The running game goes on when the save cannot be started.
-            auto game = std::make_unique<LiveGame>(*server_host_);
+            auto game = std::make_unique<LiveGame>(server_host_);
             if (std::string why = game->load(*saved, server_settings()); !why.empty()) {
                 return print("load: " + why);
             }
             stop_recording();
-            if (demo_->active()) end_demo();
-            host_.cvars().set("skill", std::to_string(saved->skill));
-            show_showroom(false);
-            demo_->start_game(std::move(game), saved->map);
-            input_->release_all();
+            context_.host->cvars().set("skill", std::to_string(saved->skill));
+            context_.begin_game(std::move(game), saved->map);
+            context_.input->release_all();
             print("Loaded game " + name + " (" + saved->map + ")");
         },
         "load a game saved with save (or by QuakeSpasm): load <name>");

@@ -1,4 +1,4 @@
-#include "app/engine_server_host.h"
+#include "app/game/engine_server_host.h"
 
 #include "fs/vfs.h"
 
