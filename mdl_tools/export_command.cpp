@@ -118,7 +118,7 @@ int run_export(const std::vector<std::string>& args) {
         return kExitFailed;
     }
     const npr::adjacency::ModelAdjacency adjacency = npr::adjacency::recover_adjacency(abi);
-    std::cerr << npr::adjacency::verdict_log_line(options.input, adjacency) << "\n";
+    std::cerr << npr::adjacency::verdict_log_line(options.input, adjacency.verdict) << "\n";
     const uint32_t first = options.all_frames ? 0 : frame;
     const uint32_t last = options.all_frames ? abi.num_frames : frame + 1;
     for (uint32_t f = first; f < last; ++f) {

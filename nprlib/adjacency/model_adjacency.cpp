@@ -71,9 +71,9 @@ ModelAdjacency recover_adjacency(const nqr_alias_model& model, const RecoveryOpt
     return out;
 }
 
-std::string verdict_log_line(const std::string& model_name, const ModelAdjacency& adjacency) {
-    return "adjacency: " + model_name + ": " + edge_style_name(adjacency.verdict.style) + " (" +
-           adjacency.verdict.reason + ")";
+std::string verdict_log_line(const std::string& model_name, const Verdict& verdict) {
+    return "adjacency: " + model_name + ": " + edge_style_name(verdict.style) + " (" +
+           verdict.reason + ")";
 }
 
 }  // namespace nq::npr::adjacency

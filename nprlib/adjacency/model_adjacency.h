@@ -44,6 +44,6 @@ struct RecoveryOptions {
 ModelAdjacency recover_adjacency(const nqr_alias_model& model, const RecoveryOptions& options = {});
 
 // "adjacency: NAME: true silhouettes and creases (99.1% of 540 edges manifold and ...)".
-std::string verdict_log_line(const std::string& model_name, const ModelAdjacency& adjacency);
+std::string verdict_log_line(const std::string& model_name, const Verdict& verdict);
 
 }  // namespace nq::npr::adjacency

@@ -41,12 +41,10 @@ std::unique_ptr<AliasEdgeMesh> AliasEdgeMesh::create(const nqr_alias_model& mode
     mesh->verdict_ = std::move(recovered.verdict);
     mesh->vertex_count_ = model.num_vertices;
     mesh->edges_ = std::move(recovered.edges.records);
-    mesh->triangles_ = std::move(recovered.file.triangles);
-    mesh->twins_ = std::move(recovered.file.twins);
-    mesh->seam_representatives_ = std::move(recovered.file.seam_representatives);
+    mesh->file_ = std::move(recovered.file);
     mesh->shadow_triangles_ = technical::shadow_triangles(recovered.mesh);
-    if (mesh->shadow_triangles_.empty()) mesh->shadow_triangles_ = mesh->triangles_;
-    mesh->facing_away_.reserve(mesh->triangles_.size());
+    if (mesh->shadow_triangles_.empty()) mesh->shadow_triangles_ = mesh->file_.triangles;
+    mesh->facing_away_.reserve(mesh->file_.triangles.size());
     return mesh;
 }
 
@@ -68,19 +66,20 @@ void AliasEdgeMesh::find_true_edges(const glm::vec3* pose, const glm::vec3& eye,
 
 void AliasEdgeMesh::find_backface_lines(const glm::vec3* pose, const glm::vec3& eye,
                                         std::vector<FoundEdge>& out) const {
-    facing_away_.resize(triangles_.size());
-    for (size_t t = 0; t < triangles_.size(); ++t) {
-        const Triangle& tri = triangles_[t];
+    const std::vector<Triangle>& triangles = file_.triangles;
+    facing_away_.resize(triangles.size());
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        const Triangle& tri = triangles[t];
         const glm::vec3& p0 = pose[tri[0]];
         const glm::vec3 normal = glm::cross(pose[tri[1]] - p0, pose[tri[2]] - p0);
         facing_away_[t] = adjacency::has_area(normal) && !adjacency::faces_eye(normal, p0, eye);
     }
-    for (size_t t = 0; t < triangles_.size(); ++t) {
+    for (size_t t = 0; t < triangles.size(); ++t) {
         if (!facing_away_[t]) continue;
         for (uint32_t k = 0; k < 3; ++k) {
-            const int32_t twin = twins_[t][k];
+            const int32_t twin = file_.twins[t][k];
             if (twin >= 0 && facing_away_[static_cast<size_t>(twin)]) continue;  // hidden
-            out.push_back({triangles_[t][k], triangles_[t][(k + 1) % 3], EdgeKind::backface});
+            out.push_back({triangles[t][k], triangles[t][(k + 1) % 3], EdgeKind::backface});
         }
     }
 }
@@ -99,8 +98,7 @@ EdgeQuery plan_edge_query(const AliasEdgeMesh& mesh, const EdgeSettings& s) {
 }
 
 std::string AliasEdgeMesh::verdict_line(const std::string& model_name) const {
-    return "adjacency: " + model_name + ": " + adjacency::edge_style_name(verdict_.style) + " (" +
-           verdict_.reason + ")";
+    return adjacency::verdict_log_line(model_name, verdict_);
 }
 
 }  // namespace nq::npr::technical

@@ -23,6 +23,7 @@
 
 #include "adjacency/edge_table.h"
 #include "adjacency/feature_edges.h"
+#include "adjacency/file_triangles.h"
 #include "adjacency/recovery_stats.h"
 #include "adjacency/verdict.h"
 #include "nqr_renderer.h"
@@ -49,7 +50,7 @@ struct FoundEdge {
 
 class AliasEdgeMesh {
   public:
-    using Triangle = std::array<uint32_t, 3>;
+    using Triangle = adjacency::FileTriangle;
 
     // Null with `error` set when the model cannot be read (see classic::validate_alias_model).
     static std::unique_ptr<AliasEdgeMesh> create(const nqr_alias_model& model, std::string& error);
@@ -64,12 +65,12 @@ class AliasEdgeMesh {
     uint32_t vertex_count() const { return vertex_count_; }
     size_t edge_count() const { return edges_.size(); }
     // The file's usable triangles, counter-clockwise seen from outside.
-    std::span<const Triangle> triangles() const { return triangles_; }
+    std::span<const Triangle> triangles() const { return file_.triangles; }
     // The triangles its shadow is cast with (shadow_mesh.h), likewise.
     std::span<const Triangle> shadow_triangles() const { return shadow_triangles_; }
     // Per MDL vertex: the lowest-numbered MDL vertex at its welded position (skin seams
     // duplicate vertices in the file), itself where there is no other.
-    std::span<const uint32_t> seam_representatives() const { return seam_representatives_; }
+    std::span<const uint32_t> seam_representatives() const { return file_.seam_representatives; }
 
     // Appends to `out` the edges `query` asks for on `pose` (vertex_count() model-space
     // positions) seen from `eye` (model space). Each edge at most once.
@@ -85,11 +86,9 @@ class AliasEdgeMesh {
 
     uint32_t vertex_count_ = 0;
     std::vector<adjacency::EdgeRecord> edges_;
-    std::vector<Triangle> triangles_;  // adjacency::FileTriangles, with its twins
-    std::vector<std::array<int32_t, 3>> twins_;
+    adjacency::FileTriangles file_;  // back-face lines and seams
     std::vector<Triangle> shadow_triangles_;
     mutable std::vector<uint8_t> facing_away_;  // scratch of find_backface_lines
-    std::vector<uint32_t> seam_representatives_;
     adjacency::RecoveryStats stats_;
     adjacency::Verdict verdict_;
 };
