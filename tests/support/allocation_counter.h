@@ -1,54 +1,11 @@
-// Counts every global operator new of the test binary that includes it, to check that per-frame
-// code allocates nothing (read nq::test::g_allocations before and after the code). Replaces the
-// global allocation functions: include it in exactly one file of a test executable.
+// Counts every global operator new of a test executable, to check that per-frame code allocates
+// nothing: read nq::test::g_allocations before and after the code. The replacement allocation
+// functions live in allocation_counter.cpp (one definition per executable); using the counter
+// links them in.
 #pragma once
 
 #include <atomic>
-#include <cstdlib>
-#include <new>
 
 namespace nq::test {
-inline std::atomic<long> g_allocations{0};
+extern std::atomic<long> g_allocations;
 }
-
-void* operator new(std::size_t n) {
-    ++nq::test::g_allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) {
-    ++nq::test::g_allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-// The nothrow forms too (std::stable_sort's buffer, LLVM inside Mesa): their memory comes back
-// through the plain operator delete below, so it must come from malloc as well.
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-    ++nq::test::g_allocations;
-    return std::malloc(n ? n : 1);
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-    ++nq::test::g_allocations;
-    return std::malloc(n ? n : 1);
-}
-// GCC 12 inlines these replacements where a `new` expression's pointer is deleted and then
-// reports free() on memory from operator new; here both sides are malloc/free by design.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
