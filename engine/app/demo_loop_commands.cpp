@@ -63,7 +63,7 @@ void Engine::start_demo_loop(const CommandArgs& args) {
     // Quake starts the loop only when nothing else runs (a +map or +timedemo came first; the
     // rest of quake.rc waits for a command-line demo to end, and the loop stays off after it,
     // played or failed); -benchmark's timedemo is queued behind quake.rc and is the job.
-    const bool after_command_line_demo = command_line_job_ && demo_is_job_;
+    const bool after_command_line_demo = timedemo_.after_command_line_demo();
     if (!demo_->active() && !quit_ && !options_.benchmark && !after_command_line_demo) {
         play_next_loop_demo();
     }

@@ -34,7 +34,11 @@ int contents_at(void* user, const Vec3& point) {
 }  // namespace
 
 Engine::Engine(const CommandLine& command_line)
-    : command_line_(command_line), options_(read_launch_options(command_line)) {
+    : command_line_(command_line),
+      options_(read_launch_options(command_line)),
+      timedemo_({&host_, &options_, user_dir() + "/" + options_.game.value_or("id1"),
+                 [this](std::string_view text) { print(text); }, [this] { quit_ = true; },
+                 [this] { exit_status_ = 1; }}) {
     host_.set_print([this](std::string_view text) { print(text); });
     start_seconds_ = seconds();
 }
@@ -50,7 +54,7 @@ Engine::~Engine() {
     hud_.reset();
     gamma_pass_.reset();
     console_drawer_.reset();
-    gpu_timers_.shutdown();
+    timedemo_.gpu_timers().shutdown();
     throttle_.release();
 }
 
@@ -143,7 +147,7 @@ bool Engine::start() {
     } else {
         print("gamma: " + gamma.error().message);
     }
-    gpu_timers_.init(true);
+    timedemo_.gpu_timers().init(true);
     // Occlusion culling samples pixel centres; a multisampled screen (a driver's forced
     // anti-aliasing) covers other points of the pixel too.
     GLint screen_samples = 0;
@@ -154,7 +158,7 @@ bool Engine::start() {
     HostServicesWiring wiring;
     wiring.host = &host_;
     wiring.vfs = vfs_ ? &*vfs_ : nullptr;
-    wiring.gpu_timers = &gpu_timers_;
+    wiring.gpu_timers = &timedemo_.gpu_timers();
     wiring.log = [this](int, std::string_view text) { print(text); };
     wiring.trace = [this](const float s[3], const float e[3], nqr_trace* out) {
         const bool demo_shown = demo_ && demo_->active();
@@ -183,12 +187,8 @@ bool Engine::start() {
     std::string plugin_dir =
         command_line_.value("-plugindir").value_or(executable_dir() + "/plugins");
     plugins_ = std::make_unique<PluginHost>(*services_, plugin_dir);
-    dispatch_ = std::make_unique<RenderDispatch>(*plugins_, &gpu_timers_);
-    if (options_.bench_trace) {
-        trace_.enable();
-        gpu_timers_.set_listener(&trace_);
-        dispatch_->set_trace(&trace_);
-    }
+    dispatch_ = std::make_unique<RenderDispatch>(*plugins_, &timedemo_.gpu_timers());
+    if (options_.bench_trace) dispatch_->set_trace(&timedemo_.trace());
 
     DemoSessionCallbacks callbacks;
     callbacks.print = [this](std::string_view t) { print(t); };
@@ -218,6 +218,7 @@ bool Engine::start() {
 
     create_menu();
     register_commands();
+    timedemo_.register_commands(host_.commands());
     register_demo_loop_commands();
     register_video_commands();
     host_.set_file_reader([this](const std::string& path) -> std::optional<std::string> {
@@ -230,7 +231,7 @@ bool Engine::start() {
         return std::string(bytes->begin(), bytes->end());
     });
     host_.queue_startup(command_line_);
-    queue_benchmark();
+    timedemo_.queue_benchmark();
     host_.commands().execute();  // quake.rc (or config.cfg, autoexec.cfg), the +commands
     load_initial_plugin();
     if (!vfs_ && !demo_->active()) show_showroom(true);
@@ -304,7 +305,8 @@ int Engine::run() {
 }
 
 void Engine::frame() {
-    trace_.begin_frame();
+    FrameTrace& trace = timedemo_.trace();
+    trace.begin_frame();
     double now = seconds();
     double frame_time = now - last_frame_seconds_;
     last_frame_seconds_ = now;
@@ -312,7 +314,7 @@ void Engine::frame() {
     handle_events();
     host_.commands().execute();
     console_->update(now - start_seconds_);
-    trace_.lap(TraceStage::Input);
+    trace.lap(TraceStage::Input);
     // A paused demo draws the same instant again: timedemo does not count those frames.
     bool timing = demo_->active() && demo_->mode() == DemoMode::TimeDemo && !demo_->paused();
     const bool game_timing = demo_->live() && !demo_->paused();
@@ -325,8 +327,8 @@ void Engine::frame() {
         } else {
             status = demo_->frame(frame_time);
         }
-        run_demo_schedule();
-        trace_.lap(TraceStage::Demo);
+        if (const DemoPlayer* player = demo_->player()) timedemo_.run_schedule(player->frames());
+        trace.lap(TraceStage::Demo);
         if (status == FrameStatus::Ended) {
             const bool next_in_loop = demo_loop_.playing();
             const bool failed = !demo_->failure().empty();
@@ -337,32 +339,20 @@ void Engine::frame() {
     }
     render(frame_time);
     update_sound(frame_time);
-    trace_.lap(TraceStage::Sound);
-    trace_.end_frame(timing);
+    trace.lap(TraceStage::Sound);
+    trace.end_frame(timing);
     if (first_frame_seconds_ < 0) {
         first_frame_seconds_ = seconds() - start_seconds_;
         print("start-up to first frame: " + std::to_string(first_frame_seconds_) + " s");
     }
-    if (timing) frame_times_.record(seconds() - now);
+    if (timing) timedemo_.record_frame(seconds() - now);
     game_->frame_drawn(seconds() - now, game_timing);
     ++frame_count_;
-    update_command_line_job();
+    // The attract loop (quake.rc's startdemos) is not the command line's job.
+    timedemo_.update_command_line_job(demo_->active() && !demo_->live() && !demo_loop_.playing());
     if (!timing && cvars_.host_maxfps->value() > 0) {
         double budget = 1.0 / cvars_.host_maxfps->value() - (seconds() - now);
         if (budget > 0) std::this_thread::sleep_for(std::chrono::duration<double>(budget));
-    }
-}
-
-// demo_at: the commands of every frame the demo has reached (demo frames, not drawn ones).
-void Engine::run_demo_schedule() {
-    const DemoPlayer* player = demo_->player();
-    for (auto it = demo_schedule_.begin(); it != demo_schedule_.end();) {
-        if (player && player->frames() >= it->first) {
-            host_.commands().add_text(it->second + "\n");
-            it = demo_schedule_.erase(it);
-        } else {
-            ++it;
-        }
     }
 }
 
@@ -403,11 +393,13 @@ void Engine::render(double frame_time) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // GPU time of paused frames stays out of the timedemo report, like their CPU time.
     bool timed = !demo_->paused();
+    GpuPassTimers& gpu_timers = timedemo_.gpu_timers();
+    FrameTrace& trace = timedemo_.trace();
     if (timed) {
-        gpu_timers_.begin_frame();
-        trace_.set_gpu_frame(gpu_timers_.frame_serial());
+        gpu_timers.begin_frame();
+        trace.set_gpu_frame(gpu_timers.frame_serial());
     }
-    trace_.lap(TraceStage::FrameStart);
+    trace.lap(TraceStage::FrameStart);
     double real_time = seconds() - start_seconds_;
     if (demo_->active() && demo_->level_ready()) {
         render_demo(real_time, static_cast<float>(frame_time));
@@ -421,12 +413,12 @@ void Engine::render(double frame_time) {
         gamma_pass_->apply(cvars_.gamma->value(), window_->drawable_width(),
                            window_->drawable_height());
     }
-    if (timed) gpu_timers_.end_frame();
-    trace_.lap(TraceStage::Overlay);
+    if (timed) gpu_timers.end_frame();
+    trace.lap(TraceStage::Overlay);
     throttle_.before_swap();
     window_->swap();
     throttle_.after_swap();
-    trace_.lap(TraceStage::Swap);
+    trace.lap(TraceStage::Swap);
 }
 
 void Engine::render_demo(double real_time, float frame_time) {
@@ -447,10 +439,11 @@ void Engine::render_demo(double real_time, float frame_time) {
     scene_.set_occlusion_culling(cvars_.occlusion->value() != 0 && !multisampled_screen_);
     const nqr_frame& frame =
         scene_.build(level, demo_->client(), view, camera_for(view), real_time, frame_time);
-    trace_.set_contents(
+    FrameTrace& trace = timedemo_.trace();
+    trace.set_contents(
         {frame.num_brush_entities + frame.num_alias_entities + frame.num_sprite_entities,
          frame.num_dlights, frame.num_particles});
-    trace_.lap(TraceStage::Scene);
+    trace.lap(TraceStage::Scene);
     dispatch_->set_obscurance(obscurance_cvars_.settings());
     dispatch_->draw(frame);
     // Engine-drawn, whatever the plugin: the tints over the 3D view, then the status bar.

@@ -5,7 +5,7 @@
 //   events -> command buffer -> demo (client state) -> scene (nqr_frame) -> plugin hooks
 //   -> view tints and status bar (hud) -> console -> gamma -> swap (and wait while the driver
 //   has too many frames queued)
-//   -> timedemo statistics
+//   -> timedemo statistics (the timedemo wing)
 #pragma once
 
 #include <memory>
@@ -13,7 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "app/benchmark_runs.h"
 #include "app/demo_loop.h"
 #include "app/demo_session.h"
 #include "app/engine_menu.h"
@@ -24,6 +23,7 @@
 #include "app/render_dispatch.h"
 #include "app/scene_builder.h"
 #include "app/showroom.h"
+#include "app/timedemo/timedemo_controller.h"
 #include "client/player_input.h"
 #include "client/view.h"
 #include "console/console.h"
@@ -36,11 +36,8 @@
 #include "menu/menu.h"
 #include "plugin/plugin_host.h"
 #include "sound/game_sound.h"
-#include "video/frame_stats.h"
 #include "video/frame_throttle.h"
-#include "video/frame_trace.h"
 #include "video/gamma_pass.h"
-#include "video/gpu_pass_timers.h"
 #include "video/video_window.h"
 
 namespace nq {
@@ -87,7 +84,6 @@ class Engine {
     void render(double frame_time);
     void render_demo(double real_time, float frame_time);
     void render_showroom(double real_time, float frame_time);
-    void run_demo_schedule();
     CameraSetup camera_for(const ViewResult& view) const;
     void handle_events();
     double seconds() const;
@@ -129,22 +125,8 @@ class Engine {
     // A game (GameController: map, load) replaces the demo or showroom on screen.
     void begin_game(std::unique_ptr<LiveGame> game, const std::string& map);
     void pause_demo(const CommandArgs& args);
-    // A timedemo ended: its report, or (when it failed) why, and never a frame rate then.
-    void finish_timedemo();
-    std::string timedemo_failure(const FrameSummary& summary) const;
-    void timedemo_failed(const std::string& name, const std::string& why);
-    void report_timedemo(const FrameSummary& summary);
-    void write_frame_times(const FrameSummary& summary);
-    void write_frame_trace();
-
-    // engine_benchmark.cpp: -benchmark DEMO -benchmarkruns N
-    void queue_benchmark();
-    void benchmark_run_done(const FrameSummary& summary);
-    void benchmark_failed(const std::string& why);
-    void log_benchmark(const std::string& failure);
-    // The command line's commands are running (a timedemo they start is the process's job:
-    // its failure is the exit status); false once they and the demos they started are done.
-    void update_command_line_job();
+    // The demo being played as the timedemo wing reports it.
+    TimedemoRun describe_run() const;
     void screenshot(const std::string& name);
     void print_view_position();
     void swap_plugin(const std::string& name);
@@ -157,9 +139,8 @@ class Engine {
     std::optional<Vfs> vfs_;
     GameData game_data_;
     std::optional<VideoWindow> window_;
-    GpuPassTimers gpu_timers_;
-    FrameTrace trace_;        // -benchtrace
-    FrameThrottle throttle_;  // after window_: goes while the context is still there
+    TimedemoController timedemo_;  // its GPU timers go while the context is still there
+    FrameThrottle throttle_;       // after window_: goes while the context is still there
     std::unique_ptr<Console> console_;
     std::optional<ConsoleDrawer> console_drawer_;
     std::unique_ptr<Hud> hud_;
@@ -181,13 +162,6 @@ class Engine {
     bool showroom_models_registered_ = false;
     bool level_models_registered_ = false;
 
-    // Timedemo: per-frame times, and the command text that waits for the demo to end.
-    FrameTimeRecorder frame_times_;
-    std::string after_demo_text_;
-    std::optional<BenchmarkRuns> benchmark_;
-    bool command_line_job_ = true;
-    bool demo_is_job_ = false;  // the demo playing was started by the command line's commands
-    std::vector<std::pair<uint64_t, std::string>> demo_schedule_;  // demo_at FRAME "commands"
     double start_seconds_ = 0;
     double last_frame_seconds_ = 0;
     double first_frame_seconds_ = -1;  // for the start-up-to-first-frame report

@@ -3,7 +3,7 @@
 // run ends it with a non-zero exit status and no figures.
 #include <filesystem>
 
-#include "app/engine.h"
+#include "app/timedemo/timedemo_controller.h"
 #include "common/file_io.h"
 
 #ifndef NQ_VERSION
@@ -12,50 +12,50 @@
 
 namespace nq {
 
-// The first run after the command line's +commands (they set up what it measures); each next
-// one ahead of the rest of the command line, which the run then holds again.
-void Engine::queue_benchmark() {
-    if (!options_.benchmark) return;
+void TimedemoController::queue_benchmark() {
+    const LaunchOptions& options = *context_.options;
+    if (!options.benchmark) return;
+    CommandSystem& commands = context_.host->commands();
     if (!benchmark_) {
-        benchmark_.emplace(*options_.benchmark, options_.benchmark_runs);
-        return host_.commands().add_text("timedemo \"" + benchmark_->demo() + "\"\n");
+        benchmark_.emplace(*options.benchmark, options.benchmark_runs);
+        return commands.add_text("timedemo \"" + benchmark_->demo() + "\"\n");
     }
-    host_.commands().insert_text("timedemo \"" + benchmark_->demo() + "\"\n");
+    commands.insert_text("timedemo \"" + benchmark_->demo() + "\"\n");
 }
 
-void Engine::benchmark_run_done(const FrameSummary& summary) {
+void TimedemoController::benchmark_run_done(const TimedemoRun& run, const FrameSummary& summary) {
     benchmark_->add_run(summary);
     if (!benchmark_->complete()) return;
-    print(benchmark_->report());
-    log_benchmark({});
-    quit_ = true;
+    context_.print(benchmark_->report());
+    log_benchmark(run, {});
+    context_.quit();
 }
 
-void Engine::benchmark_failed(const std::string& why) {
-    print("benchmark " + benchmark_->demo() + " failed after " +
-          std::to_string(benchmark_->runs_done()) + " of " +
-          std::to_string(benchmark_->runs_wanted()) + " runs");
-    log_benchmark(why);
-    exit_status_ = 1;
-    quit_ = true;
+void TimedemoController::benchmark_failed(const TimedemoRun& run, const std::string& why) {
+    context_.print("benchmark " + benchmark_->demo() + " failed after " +
+                   std::to_string(benchmark_->runs_done()) + " of " +
+                   std::to_string(benchmark_->runs_wanted()) + " runs");
+    log_benchmark(run, why);
+    context_.fail_process();
+    context_.quit();
 }
 
-void Engine::log_benchmark(const std::string& failure) {
-    BenchmarkContext context;
-    context.utc_time = utc_time_now();
-    context.engine_version = NQ_VERSION;
-    context.gl_renderer = window_->gl_info().renderer;
-    // A run that failed at start-up failed before the plugin loaded: the one it was to use.
-    context.plugin = plugins_->active() ? plugins_->active_name() : cvars_.r_plugin->string();
-    context.width = window_->drawable_width();
-    context.height = window_->drawable_height();
-    context.command_line = process_command_line();
-    const std::string dir = user_dir() + "/" + options_.game.value_or("id1");
+void TimedemoController::log_benchmark(const TimedemoRun& run, const std::string& failure) {
+    BenchmarkContext log;
+    log.utc_time = utc_time_now();
+    log.engine_version = NQ_VERSION;
+    log.gl_renderer = run.gl_renderer;
+    log.plugin = run.plugin;
+    log.width = run.width;
+    log.height = run.height;
+    log.command_line = process_command_line();
+    const std::string& dir = context_.user_game_dir;
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     const std::string error =
-        append_file(dir + "/benchmark.log", benchmark_->log_line(context, failure) + "\n");
-    print(error.empty() ? "benchmark: logged to " + dir + "/benchmark.log" : "benchmark: " + error);
+        append_file(dir + "/benchmark.log", benchmark_->log_line(log, failure) + "\n");
+    context_.print(error.empty() ? "benchmark: logged to " + dir + "/benchmark.log"
+                                 : "benchmark: " + error);
 }
 
 }  // namespace nq

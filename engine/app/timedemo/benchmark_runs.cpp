@@ -1,4 +1,4 @@
-#include "app/benchmark_runs.h"
+#include "app/timedemo/benchmark_runs.h"
 
 #include <algorithm>
 #include <cstdio>
