@@ -76,7 +76,7 @@ void Engine::play_next_loop_demo() {
         print("demos: " + why);
         return continue_demo_loop(true);
     }
-    show_showroom(false);
+    frames_->show_showroom(false);
     demo_loop_.set_playing(true);
 }
 

@@ -26,11 +26,6 @@ std::string executable_dir() {
     return ec ? std::string(".") : exe.parent_path().string();
 }
 
-int contents_at(void* user, const Vec3& point) {
-    const Bsp* bsp = static_cast<const Bsp*>(user);
-    return bsp ? point_contents(*bsp, 0, {point[0], point[1], point[2]}) : 0;
-}
-
 }  // namespace
 
 Engine::Engine(const CommandLine& command_line)
@@ -49,8 +44,7 @@ Engine::~Engine() {
     menu_.reset();
     sound_.reset();  // the device's callback stops before anything it reads goes
     demo_.reset();
-    dispatch_.reset();
-    plugins_.reset();
+    frames_.reset();
     hud_.reset();
     gamma_pass_.reset();
     console_drawer_.reset();
@@ -155,40 +149,18 @@ bool Engine::start() {
     multisampled_screen_ = screen_samples > 1;
     if (multisampled_screen_) print("multisampled screen: r_occlusion has no effect");
 
-    HostServicesWiring wiring;
-    wiring.host = &host_;
-    wiring.vfs = vfs_ ? &*vfs_ : nullptr;
-    wiring.gpu_timers = &timedemo_.gpu_timers();
-    wiring.log = [this](int, std::string_view text) { print(text); };
-    wiring.trace = [this](const float s[3], const float e[3], nqr_trace* out) {
-        const bool demo_shown = demo_ && demo_->active();
-        if (showroom_ && !demo_shown) return Showroom::trace(s, e, out);
-        const Bsp* bsp = demo_ ? demo_->level().world_bsp() : nullptr;
-        if (!bsp) return;
-        BspTrace t = trace_hull(*bsp, 0, {s[0], s[1], s[2]}, {e[0], e[1], e[2]});
-        out->fraction = t.fraction;
-        for (int k = 0; k < 3; ++k) {
-            out->end[k] = t.end[k];
-            out->plane_normal[k] = t.plane_normal[k];
-        }
-        out->plane_dist = t.plane_dist;
-        out->start_solid = t.start_solid ? 1 : 0;
+    FrameRendererContext frame;
+    frame.host = &host_;
+    frame.vfs = vfs_ ? &*vfs_ : nullptr;
+    frame.game_data = &game_data_;
+    frame.gpu_timers = &timedemo_.gpu_timers();
+    frame.trace = &timedemo_.trace();
+    frame.plugin_dir = command_line_.value("-plugindir").value_or(executable_dir() + "/plugins");
+    frame.print = [this](std::string_view text) { print(text); };
+    frame.session_world = [this]() -> const Bsp* {
+        return demo_ && demo_->active() ? demo_->level().world_bsp() : nullptr;
     };
-    wiring.gl_proc_address = &VideoWindow::gl_proc_address;
-    services_ = std::make_unique<HostServices>(std::move(wiring));
-    auto palette = game_data_.palette_bytes();
-    uint8_t pal[768];
-    std::copy(palette.begin(), palette.end(), pal);
-    services_->set_palette(pal);
-    if (game_data_.colormap) {
-        services_->set_colormap(game_data_.colormap->table.data(),
-                                game_data_.colormap->table.size());
-    }
-    std::string plugin_dir =
-        command_line_.value("-plugindir").value_or(executable_dir() + "/plugins");
-    plugins_ = std::make_unique<PluginHost>(*services_, plugin_dir);
-    dispatch_ = std::make_unique<RenderDispatch>(*plugins_, &timedemo_.gpu_timers());
-    if (options_.bench_trace) dispatch_->set_trace(&timedemo_.trace());
+    frames_ = std::make_unique<FrameRenderer>(std::move(frame));
 
     DemoSessionCallbacks callbacks;
     callbacks.print = [this](std::string_view t) { print(t); };
@@ -198,11 +170,16 @@ bool Engine::start() {
     callbacks.stuff_text = [this](std::string_view text) {
         if (demo_ && demo_->live()) host_.commands().add_text(text);
     };
-    callbacks.level_unloading = [this] { release_level_models(); };
-    callbacks.level_loaded = [this](Level& level) { register_level_models(level); };
-    callbacks.level_restarted = [this](Level& level) { level_restarted(level); };
+    callbacks.level_unloading = [this] { frames_->release_level_models(); };
+    callbacks.level_loaded = [this](Level& level) {
+        frames_->register_level_models(level, frame_settings());
+    };
+    callbacks.level_restarted = [this](Level& level) {
+        frames_->level_restarted(level, frame_settings());
+    };
     demo_ = std::make_unique<DemoSession>(vfs_ ? &*vfs_ : nullptr, std::move(callbacks));
-    demo_->level().set_palette(palette);  // surface colours for the ambient cube field
+    demo_->level().set_palette(
+        game_data_.palette_bytes());  // surface colours for the ambient cube field
     demo_->set_user_dir(user_dir() + "/" + options_.game.value_or("id1"));
     GameContext game;
     game.host = &host_;
@@ -234,7 +211,7 @@ bool Engine::start() {
     timedemo_.queue_benchmark();
     host_.commands().execute();  // quake.rc (or config.cfg, autoexec.cfg), the +commands
     load_initial_plugin();
-    if (!vfs_ && !demo_->active()) show_showroom(true);
+    if (!vfs_ && !demo_->active()) frames_->show_showroom(true);
     // Quake's start without +commands: the menu, over the demo loop if there is one.
     if (vfs_ && command_line_.command_text().empty() && !options_.benchmark && !quit_) {
         menu_->open(MenuScreen::Main);
@@ -286,12 +263,12 @@ bool Engine::open_window() {
 }
 
 void Engine::load_initial_plugin() {
-    if (plugins_->active()) return;
+    if (frames_->plugins().active()) return;
     for (const std::string& name :
          {cvars_.r_plugin->string(), std::string(kDefaultPlugin), std::string("null")}) {
-        std::string why = dispatch_->load_plugin(name);
+        std::string why = frames_->load_plugin(name);
         if (why.empty()) {
-            print("renderer: " + plugins_->active_name());
+            print("renderer: " + frames_->plugins().active_name());
             return;
         }
         print("r_plugin: " + why);
@@ -347,7 +324,6 @@ void Engine::frame() {
     }
     if (timing) timedemo_.record_frame(seconds() - now);
     game_->frame_drawn(seconds() - now, game_timing);
-    ++frame_count_;
     // The attract loop (quake.rc's startdemos) is not the command line's job.
     timedemo_.update_command_line_job(demo_->active() && !demo_->live() && !demo_loop_.playing());
     if (!timing && cvars_.host_maxfps->value() > 0) {
@@ -377,14 +353,18 @@ void Engine::handle_events() {
     relative_mouse_ = relative;
 }
 
-CameraSetup Engine::camera_for(const ViewResult& view) const {
-    CameraSetup camera;
-    camera.origin = {view.origin[0], view.origin[1], view.origin[2]};
-    camera.angles = {view.angles[0], view.angles[1], view.angles[2]};
-    camera.fov_x = cvars_.fov->value();
-    camera.viewport[2] = window_->drawable_width();
-    camera.viewport[3] = window_->drawable_height();
-    return camera;
+FrameSettings Engine::frame_settings() {
+    FrameSettings settings;
+    settings.width = window_->drawable_width();
+    settings.height = window_->drawable_height();
+    settings.fov_x = cvars_.fov->value();
+    settings.occlusion = cvars_.occlusion->value() != 0 && !multisampled_screen_;
+    settings.view_model_lift =
+        cvars_.viewmodel_quake->value() != 0 ? view_model_lift_for(hud_->viewsize()) : 0.0f;
+    settings.draw_view_model = cvars_.draw_viewmodel->value() != 0;
+    settings.showroom_time = cvars_.showroom_time->value();
+    settings.obscurance = obscurance_cvars_.settings();
+    return settings;
 }
 
 void Engine::render(double frame_time) {
@@ -403,8 +383,8 @@ void Engine::render(double frame_time) {
     double real_time = seconds() - start_seconds_;
     if (demo_->active() && demo_->level_ready()) {
         render_demo(real_time, static_cast<float>(frame_time));
-    } else if (showroom_) {
-        render_showroom(real_time, static_cast<float>(frame_time));
+    } else {
+        frames_->draw_showroom(real_time, static_cast<float>(frame_time), frame_settings());
     }
     hud_->count_frame(real_time);
     draw_menu(real_time);
@@ -422,45 +402,11 @@ void Engine::render(double frame_time) {
 }
 
 void Engine::render_demo(double real_time, float frame_time) {
-    if (demo_->paused()) {  // the instant drawn last, its wall clock included
-        real_time = demo_real_time_;
-        frame_time = 0;
-    }
-    demo_real_time_ = real_time;
-    Level& level = demo_->level();
-    ViewSettings settings;
-    settings.contents_at = &contents_at;
-    settings.contents_user = const_cast<Bsp*>(level.world_bsp());
-    settings.view_model_lift =
-        cvars_.viewmodel_quake->value() != 0 ? view_model_lift_for(hud_->viewsize()) : 0.0f;
-    settings.draw_view_model = cvars_.draw_viewmodel->value() != 0;
-    ViewResult view = compute_view(demo_->client(), view_state_, settings);
-    listener_ = listener_for_view(view.origin, view.angles, demo_->client().view_entity());
-    scene_.set_occlusion_culling(cvars_.occlusion->value() != 0 && !multisampled_screen_);
-    const nqr_frame& frame =
-        scene_.build(level, demo_->client(), view, camera_for(view), real_time, frame_time);
-    FrameTrace& trace = timedemo_.trace();
-    trace.set_contents(
-        {frame.num_brush_entities + frame.num_alias_entities + frame.num_sprite_entities,
-         frame.num_dlights, frame.num_particles});
-    trace.lap(TraceStage::Scene);
-    dispatch_->set_obscurance(obscurance_cvars_.settings());
-    dispatch_->draw(frame);
+    const ViewResult view = frames_->draw_level(demo_->level(), demo_->client(), demo_->paused(),
+                                                real_time, frame_time, frame_settings());
     // Engine-drawn, whatever the plugin: the tints over the 3D view, then the status bar.
     hud_->draw(demo_->client(), view.eye_contents, window_->drawable_width(),
                window_->drawable_height(), real_time);
-}
-
-void Engine::render_showroom(double real_time, float frame_time) {
-    CameraSetup camera =
-        Showroom::default_camera(window_->drawable_width(), window_->drawable_height());
-    camera.fov_x = cvars_.fov->value();
-    if (float fixed = cvars_.showroom_time->value(); fixed >= 0) {  // a still scene
-        real_time = fixed;
-        frame_time = 0;
-    }
-    dispatch_->set_obscurance(obscurance_cvars_.settings());
-    dispatch_->draw(showroom_->build(scene_, camera, real_time, real_time, frame_time));
 }
 
 void Engine::write_config() {

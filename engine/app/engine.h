@@ -16,16 +16,16 @@
 #include "app/demo_loop.h"
 #include "app/demo_session.h"
 #include "app/engine_menu.h"
+#include "app/frame/frame_renderer.h"
+#include "app/frame/host_services.h"
+#include "app/frame/render_dispatch.h"
+#include "app/frame/scene_builder.h"
+#include "app/frame/showroom.h"
 #include "app/game/game_controller.h"
 #include "app/game_data.h"
-#include "app/host_services.h"
 #include "app/obscurance_cvars.h"
-#include "app/render_dispatch.h"
-#include "app/scene_builder.h"
-#include "app/showroom.h"
 #include "app/timedemo/timedemo_controller.h"
 #include "client/player_input.h"
-#include "client/view.h"
 #include "console/console.h"
 #include "console/console_drawer.h"
 #include "fs/vfs.h"
@@ -83,8 +83,8 @@ class Engine {
     void frame();
     void render(double frame_time);
     void render_demo(double real_time, float frame_time);
-    void render_showroom(double real_time, float frame_time);
-    CameraSetup camera_for(const ViewResult& view) const;
+    // This frame's settings for the frame wing, from cvars and the screen.
+    FrameSettings frame_settings();
     void handle_events();
     double seconds() const;
     void write_config();
@@ -108,15 +108,6 @@ class Engine {
     void continue_demo_loop(bool failed);
     // engine_sound.cpp
     void update_sound(double frame_time);
-
-    // engine_models.cpp
-    void register_level_models(Level& level);
-    // Draws the level's warm-up frame (SceneBuilder::build_warm_up) and waits for it, so the
-    // driver's first-use costs land at load; the next frame clears it before anything shows.
-    void warm_up_renderer(Level& level);
-    void level_restarted(Level& level);
-    void release_level_models();
-    void show_showroom(bool on);
 
     // engine_commands.cpp
     void register_commands();
@@ -145,28 +136,18 @@ class Engine {
     std::optional<ConsoleDrawer> console_drawer_;
     std::unique_ptr<Hud> hud_;
     std::optional<GammaPass> gamma_pass_;
-    std::unique_ptr<HostServices> services_;
-    std::unique_ptr<PluginHost> plugins_;
-    std::unique_ptr<RenderDispatch> dispatch_;
+    std::unique_ptr<FrameRenderer> frames_;  // plugins, their models, the frame drawn
     std::unique_ptr<DemoSession> demo_;
     std::unique_ptr<PlayerInput> input_;
     std::unique_ptr<EngineMenuServices> menu_services_;
-    std::unique_ptr<Menu> menu_;  // after hud_ and plugins_, whose pictures and styles it shows
+    std::unique_ptr<Menu> menu_;  // after hud_ and frames_, whose pictures and styles it shows
     DemoLoop demo_loop_;
     std::unique_ptr<GameController> game_;  // after demo_ and input_, which it plays through
-    SceneBuilder scene_;
-    ViewState view_state_;
     std::unique_ptr<GameSound> sound_;
-    Listener listener_;  // the view drawn last, where sound is heard from
-    std::unique_ptr<Showroom> showroom_;
-    bool showroom_models_registered_ = false;
-    bool level_models_registered_ = false;
 
     double start_seconds_ = 0;
     double last_frame_seconds_ = 0;
     double first_frame_seconds_ = -1;  // for the start-up-to-first-frame report
-    double demo_real_time_ = 0;        // wall clock of the demo frame drawn last (for pause)
-    uint64_t frame_count_ = 0;
     bool quit_ = false;
     bool relative_mouse_ = false;       // the mouse turns the view (a game runs, nothing open)
     bool multisampled_screen_ = false;  // occlusion culling is then off

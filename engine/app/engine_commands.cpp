@@ -49,14 +49,15 @@ void Engine::register_commands() {
         "vo_dump_scene",
         [this](const CommandArgs& a) {
             if (a.argc() < 2) return print("usage: vo_dump_scene <file>");
-            dispatch_->dump_scene_next_frame(a.argv(1), [this](const std::string& m) { print(m); });
+            frames_->dispatch().dump_scene_next_frame(a.argv(1),
+                                                      [this](const std::string& m) { print(m); });
         },
         "write the next frame's geometry for the ray-traced obscurance reference (vo_reference)");
     c.add_command(
         "r_plugin",
         [this](const CommandArgs& a) {
             if (a.argc() < 2) {
-                return print("renderer: " + plugins_->active_name() +
+                return print("renderer: " + frames_->plugins().active_name() +
                              " (r_plugins lists the others)");
             }
             swap_plugin(a.argv(1));
@@ -65,8 +66,9 @@ void Engine::register_commands() {
     c.add_command(
         "r_plugins",
         [this](const CommandArgs&) {
-            for (const auto& p : plugins_->available()) {
-                print((p.name == plugins_->active_name() ? "* " : "  ") + p.name + "  " + p.path);
+            for (const auto& p : frames_->plugins().available()) {
+                print((p.name == frames_->plugins().active_name() ? "* " : "  ") + p.name + "  " +
+                      p.path);
             }
         },
         "list renderer plugins");
@@ -74,7 +76,7 @@ void Engine::register_commands() {
         "showroom",
         [this](const CommandArgs&) {
             if (demo_->active()) end_demo();
-            show_showroom(true);
+            frames_->show_showroom(true);
         },
         "show the built-in showroom scene");
     c.add_command(
@@ -101,15 +103,15 @@ void Engine::print_view_position() {
 }
 
 void Engine::swap_plugin(const std::string& name) {
-    std::string why = dispatch_->load_plugin(name);
+    std::string why = frames_->load_plugin(name);
     if (!why.empty()) {
-        std::string current = plugins_->active_name();
+        std::string current = frames_->plugins().active_name();
         print("r_plugin: " + why + (current.empty() ? "" : "; keeping " + current));
         return;
     }
     host_.cvars().set(*cvars_.r_plugin, name);
-    print("renderer: " + plugins_->active_name());
-    if (level_models_registered_) warm_up_renderer(demo_->level());
+    print("renderer: " + frames_->plugins().active_name());
+    frames_->warm_up_shown_level(demo_->level(), frame_settings());
 }
 
 void Engine::start_demo(const std::string& name, DemoMode mode) {
@@ -121,7 +123,7 @@ void Engine::start_demo(const std::string& name, DemoMode mode) {
         run.demo = name;
         return timedemo_.timedemo_failed(run, why);
     }
-    show_showroom(false);
+    frames_->show_showroom(false);
     demo_loop_.set_playing(false);  // a demo chosen by hand ends the attract loop
     // The rest of the command line ("+timedemo demo +quit") waits for the demo to end.
     timedemo_.demo_started();
@@ -133,13 +135,13 @@ void Engine::end_demo() {
     if (timedemo) timedemo_.finish_timedemo(describe_run());
     demo_->stop();
     demo_loop_.set_playing(false);
-    if (!vfs_) show_showroom(true);
+    if (!vfs_) frames_->show_showroom(true);
     timedemo_.demo_ended(timedemo, quit_);
 }
 
 void Engine::begin_game(std::unique_ptr<LiveGame> game, const std::string& map) {
     if (demo_->active()) end_demo();
-    show_showroom(false);
+    frames_->show_showroom(false);
     demo_->start_game(std::move(game), map);
 }
 
@@ -156,7 +158,8 @@ TimedemoRun Engine::describe_run() const {
     run.demo = demo_->name();
     run.failure = demo_->failure();
     // A run that failed at start-up failed before the plugin loaded: the one it was to use.
-    run.plugin = plugins_->active() ? plugins_->active_name() : cvars_.r_plugin->string();
+    run.plugin =
+        frames_->plugins().active() ? frames_->plugins().active_name() : cvars_.r_plugin->string();
     run.width = window_->drawable_width();
     run.height = window_->drawable_height();
     run.gl_renderer = window_->gl_info().renderer;

@@ -68,7 +68,7 @@ bool EngineMenuServices::game_running() const {
 
 void Engine::create_menu() {
     const std::string save_dir = user_dir() + "/" + options_.game.value_or("id1");
-    menu_services_ = std::make_unique<EngineMenuServices>(*plugins_, *demo_, save_dir);
+    menu_services_ = std::make_unique<EngineMenuServices>(frames_->plugins(), *demo_, save_dir);
     menu_ = std::make_unique<Menu>(host_, *menu_services_);
     int pages = 0;
     if (const HudDrawer* drawer = hud_->drawer()) {

@@ -13,7 +13,7 @@ void Engine::update_sound(double frame_time) {
         frame.world = demo_->level().world_bsp();
     }
     frame.paused = demo_->paused();
-    frame.listener = listener_;
+    frame.listener = frames_->listener();
     sound_->update(frame_time, frame);
 }
 

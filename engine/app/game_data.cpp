@@ -1,6 +1,6 @@
 #include "app/game_data.h"
 
-#include "app/showroom.h"
+#include "app/frame/showroom.h"
 #include "fs/vfs.h"
 
 namespace nq {

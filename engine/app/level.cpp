@@ -76,7 +76,8 @@ void Level::start_ambient_bake(const BrushModelData& data) {
     std::vector<glm::vec3> reflectivity = texture_reflectivity(data.bsp(), palette_);
     baking_ = std::async(std::launch::async, [&data, reflectivity = std::move(reflectivity)] {
         const auto start = std::chrono::steady_clock::now();
-        BakedField baked{AmbientCubeField::bake(data.bsp(), data.lighting_rgb(), reflectivity), 0.0};
+        BakedField baked{AmbientCubeField::bake(data.bsp(), data.lighting_rgb(), reflectivity),
+                         0.0};
         baked.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return baked;

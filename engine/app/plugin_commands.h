@@ -13,7 +13,7 @@
 namespace nq {
 
 class PluginCommands {
-public:
+  public:
     explicit PluginCommands(CommandSystem& commands) : commands_(commands) {}
     ~PluginCommands();
 
@@ -22,7 +22,7 @@ public:
              const std::string& description);
     void release_owner(OwnerId owner);
 
-private:
+  private:
     struct Registration {
         OwnerId owner;
         nqr_command_fn fn;

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_builder.h"
+#include "app/frame/scene_builder.h"
 #include "support/engine_demo_replay.h"
 #include "support/nprlib_test_support.h"
 #include "render/occlusion_culler.h"

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <string>
 
-#include "app/scene_builder.h"
+#include "app/frame/scene_builder.h"
 #include "support/engine_demo_replay.h"
 #include "render/alias_model.h"
 #include "render/frustum.h"

@@ -11,10 +11,10 @@
 #include <memory>
 #include <optional>
 
-#include "app/host_services.h"
-#include "app/render_dispatch.h"
-#include "app/scene_builder.h"
-#include "app/showroom.h"
+#include "app/frame/host_services.h"
+#include "app/frame/render_dispatch.h"
+#include "app/frame/scene_builder.h"
+#include "app/frame/showroom.h"
 #include "host/host_core.h"
 #include "plugin/plugin_host.h"
 #include "support/build_paths.h"

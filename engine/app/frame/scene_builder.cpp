@@ -1,4 +1,4 @@
-#include "app/scene_builder.h"
+#include "app/frame/scene_builder.h"
 
 #include <algorithm>
 

@@ -10,7 +10,7 @@
 namespace nq {
 
 class SceneFramebuffer {
-public:
+  public:
     SceneFramebuffer() = default;
     ~SceneFramebuffer();
     SceneFramebuffer(const SceneFramebuffer&) = delete;
@@ -23,7 +23,7 @@ public:
     const nqr_gbuffer& gbuffer() const { return gbuffer_; }
     void release();
 
-private:
+  private:
     nqr_gbuffer gbuffer_{sizeof(nqr_gbuffer), 0, 0, 0, 0, 0, 0};
 };
 

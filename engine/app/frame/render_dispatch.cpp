@@ -1,4 +1,4 @@
-#include "app/render_dispatch.h"
+#include "app/frame/render_dispatch.h"
 
 #include <algorithm>
 #include <utility>

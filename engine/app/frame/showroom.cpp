@@ -1,4 +1,4 @@
-#include "app/showroom.h"
+#include "app/frame/showroom.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +21,9 @@ constexpr int kSkinSize = 16;
 constexpr uint8_t kFloorDark = 6, kFloorLight = 11;
 constexpr uint8_t kModelColours[] = {4 * 16 + 5, 13 * 16 + 5, 3 * 16 + 6, 12 * 16 + 5};
 
-float radians(float degrees) { return degrees * std::numbers::pi_v<float> / 180.0f; }
+float radians(float degrees) {
+    return degrees * std::numbers::pi_v<float> / 180.0f;
+}
 
 }  // namespace
 
@@ -171,7 +173,8 @@ Showroom::Showroom() : floor_(std::make_unique<FloorStorage>()) {
             a->st.insert(a->st.end(), {0, kSkinSize / 2, kSkinSize / 2});
         }
         // Quake's alias triangles are clockwise seen from outside: swap two corners.
-        for (const auto& t : a->mesh.triangles) a->triangles.insert(a->triangles.end(), {1, t[0], t[2], t[1]});
+        for (const auto& t : a->mesh.triangles)
+            a->triangles.insert(a->triangles.end(), {1, t[0], t[2], t[1]});
         a->skin_pixels.assign(kSkinSize * kSkinSize, kModelColours[i]);
         a->skin_image = a->skin_pixels.data();
         a->frame = nqr_alias_frame{sizeof(nqr_alias_frame), "base", 0, 1, &a->interval};
@@ -220,8 +223,8 @@ std::vector<const nqr_model*> Showroom::models() const {
 std::array<uint8_t, 768> Showroom::builtin_palette() {
     // 14 hue ramps dark -> bright (row 0 grey), then two rows of bright colours (224-255 are
     // fullbright in Quake's convention).
-    static const float kHues[16] = {0,   30, 200, 120, 0,   25, 45, 15,
-                                    280, 320, 35, 100, 55, 220, 20, 60};
+    static const float kHues[16] = {0,   30,  200, 120, 0,  25,  45, 15,
+                                    280, 320, 35,  100, 55, 220, 20, 60};
     std::array<uint8_t, 768> pal{};
     for (int row = 0; row < 16; ++row) {
         for (int i = 0; i < 16; ++i) {
@@ -231,7 +234,8 @@ std::array<uint8_t, 768> Showroom::builtin_palette() {
             float c = v * sat, x = c * (1 - std::abs(std::fmod(h, 2.0f) - 1)), m = v - c;
             float r = 0, g = 0, b = 0;
             int sector = static_cast<int>(h) % 6;
-            const float rgb[6][3] = {{c, x, 0}, {x, c, 0}, {0, c, x}, {0, x, c}, {x, 0, c}, {c, 0, x}};
+            const float rgb[6][3] = {{c, x, 0}, {x, c, 0}, {0, c, x},
+                                     {0, x, c}, {x, 0, c}, {c, 0, x}};
             r = rgb[sector][0], g = rgb[sector][1], b = rgb[sector][2];
             int idx = (row * 16 + i) * 3;
             pal[idx] = static_cast<uint8_t>((r + m) * 255);

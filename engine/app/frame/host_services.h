@@ -17,7 +17,7 @@ class GpuPassTimers;
 
 struct HostServicesWiring {
     HostCore* host = nullptr;
-    const Vfs* vfs = nullptr;            // may be null (showroom without data)
+    const Vfs* vfs = nullptr;             // may be null (showroom without data)
     GpuPassTimers* gpu_timers = nullptr;  // may be null (no GL)
     std::function<void(int level, std::string_view text)> log;
     // Traces against the loaded world; leaves `out` at fraction 1 when no map is loaded.
@@ -26,7 +26,7 @@ struct HostServicesWiring {
 };
 
 class HostServices : public EngineServices {
-public:
+  public:
     explicit HostServices(HostServicesWiring wiring);
 
     // Palette and colormap handed to plugins; defaults are a grey ramp until set.
@@ -49,7 +49,7 @@ public:
     void gpu_pass_begin(const char* name) override;
     void gpu_pass_end() override;
 
-private:
+  private:
     HostServicesWiring wiring_;
     PluginCommands plugin_commands_;
     std::array<uint8_t, 768> palette_{};

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "app/scene_framebuffer.h"
+#include "app/frame/scene_framebuffer.h"
 #include "nqr_renderer.h"
 #include "obscurance/obscurance_pass.h"
 #include "plugin/plugin_host.h"

@@ -1,4 +1,4 @@
-#include "app/showroom_meshes.h"
+#include "app/frame/showroom_meshes.h"
 
 #include <cmath>
 #include <numbers>
@@ -41,7 +41,8 @@ Mesh make_step(float size) {
         float y = side == 0 ? -s / 2 : s / 2;
         for (const auto& p : profile) m.positions.push_back({p[0], y, p[1]});
     }
-    // The -Y cap (profile as listed is counter-clockwise seen from -Y): fan split into convex parts.
+    // The -Y cap (profile as listed is counter-clockwise seen from -Y): fan split into convex
+    // parts.
     m.triangles.push_back({0, 1, 2});
     m.triangles.push_back({0, 2, 3});
     m.triangles.push_back({0, 3, 4});
@@ -76,9 +77,11 @@ Mesh make_sphere(float radius, int rings, int segments) {
     auto at = [&](int ring, int s) { return 1 + (ring - 1) * segments + (s % segments); };
     for (int s = 0; s < segments; ++s) m.triangles.push_back({0, at(1, s + 1), at(1, s)});
     for (int r = 1; r < rings - 1; ++r) {
-        for (int s = 0; s < segments; ++s) quad(m, at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r + 1, s));
+        for (int s = 0; s < segments; ++s)
+            quad(m, at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r + 1, s));
     }
-    for (int s = 0; s < segments; ++s) m.triangles.push_back({top, at(rings - 1, s), at(rings - 1, s + 1)});
+    for (int s = 0; s < segments; ++s)
+        m.triangles.push_back({top, at(rings - 1, s), at(rings - 1, s + 1)});
     return m;
 }
 
@@ -94,7 +97,8 @@ Mesh make_torus(float major, float minor, int rings, int segments) {
     }
     auto at = [&](int r, int s) { return (r % rings) * segments + (s % segments); };
     for (int r = 0; r < rings; ++r) {
-        for (int s = 0; s < segments; ++s) quad(m, at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1));
+        for (int s = 0; s < segments; ++s)
+            quad(m, at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1));
     }
     return m;
 }

@@ -9,14 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_builder.h"
-#include "app/showroom_meshes.h"
+#include "app/frame/scene_builder.h"
+#include "app/frame/showroom_meshes.h"
 #include "nqr_renderer.h"
 
 namespace nq {
 
 class Showroom {
-public:
+  public:
     static constexpr float kFloorHalfSize = 512.0f;
     static constexpr float kLightHeight = 320.0f;
     static constexpr float kModelSize = 64.0f;
@@ -49,7 +49,7 @@ public:
     // a solid slab under the floor square; everything else is open space.
     static void trace(const float start[3], const float end[3], nqr_trace* out);
 
-private:
+  private:
     struct AliasStorage;
     struct FloorStorage;
 

@@ -1,4 +1,4 @@
-#include "app/scene_framebuffer.h"
+#include "app/frame/scene_framebuffer.h"
 
 #include <epoxy/gl.h>
 
@@ -21,7 +21,9 @@ GLuint make_texture(GLenum internal_format, GLenum format, GLenum type, int w, i
 
 }  // namespace
 
-SceneFramebuffer::~SceneFramebuffer() { release(); }
+SceneFramebuffer::~SceneFramebuffer() {
+    release();
+}
 
 void SceneFramebuffer::release() {
     GLuint textures[] = {gbuffer_.color_texture, gbuffer_.normal_texture, gbuffer_.depth_texture};

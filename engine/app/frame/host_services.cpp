@@ -1,4 +1,4 @@
-#include "app/host_services.h"
+#include "app/frame/host_services.h"
 
 #include <algorithm>
 #include <chrono>
@@ -48,8 +48,8 @@ void HostServices::set_cvar(const char* name, const char* value) {
     wiring_.host->cvars().set(name, value, CvarSource::kEngine);
 }
 
-bool HostServices::register_command(OwnerId owner, const char* name, nqr_command_fn fn,
-                                    void* user, const char* description) {
+bool HostServices::register_command(OwnerId owner, const char* name, nqr_command_fn fn, void* user,
+                                    const char* description) {
     return plugin_commands_.add(owner, name, fn, user, description);
 }
 
