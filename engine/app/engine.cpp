@@ -12,7 +12,6 @@
 #include "console/console_font.h"
 #include "formats/bsp.h"
 #include "host/config_writer.h"
-#include "video/resident_libraries.h"
 
 namespace nq {
 
@@ -35,7 +34,6 @@ Engine::Engine(const CommandLine& command_line)
                  [this](std::string_view text) { print(text); }, [this] { quit_ = true; },
                  [this] { exit_status_ = 1; }}) {
     host_.set_print([this](std::string_view text) { print(text); });
-    start_seconds_ = seconds();
 }
 
 Engine::~Engine() {
@@ -46,15 +44,8 @@ Engine::~Engine() {
     demo_.reset();
     frames_.reset();
     hud_.reset();
-    gamma_pass_.reset();
     console_drawer_.reset();
     timedemo_.gpu_timers().shutdown();
-    throttle_.release();
-}
-
-double Engine::seconds() const {
-    using Clock = std::chrono::steady_clock;
-    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
 }
 
 void Engine::print(std::string_view text) {
@@ -122,9 +113,15 @@ bool Engine::start() {
          3.0f});
 
     mount_game_data();
-    if (!open_window()) return false;
+    auto screen = Screen::open(options_, [this](std::string_view text) { print(text); });
+    if (!screen) {
+        print(screen.error().message);
+        exit_status_ = 1;
+        return false;
+    }
+    screen_ = std::move(screen.value());
     console_ = std::make_unique<Console>(host_);
-    console_->set_screen_size(window_->drawable_width(), window_->drawable_height());
+    console_->set_screen_size(screen_->width(), screen_->height());
     if (auto drawer = ConsoleDrawer::create()) {
         console_drawer_.emplace(std::move(drawer.value()));
         if (game_data_.gfx_wad && game_data_.palette) {
@@ -136,18 +133,7 @@ bool Engine::start() {
         print("console: " + drawer.error().message);
     }
     create_hud();
-    if (auto gamma = GammaPass::create()) {
-        gamma_pass_.emplace(std::move(gamma.value()));
-    } else {
-        print("gamma: " + gamma.error().message);
-    }
     timedemo_.gpu_timers().init(true);
-    // Occlusion culling samples pixel centres; a multisampled screen (a driver's forced
-    // anti-aliasing) covers other points of the pixel too.
-    GLint screen_samples = 0;
-    glGetIntegerv(GL_SAMPLES, &screen_samples);
-    multisampled_screen_ = screen_samples > 1;
-    if (multisampled_screen_) print("multisampled screen: r_occlusion has no effect");
 
     FrameRendererContext frame;
     frame.host = &host_;
@@ -197,7 +183,8 @@ bool Engine::start() {
     register_commands();
     timedemo_.register_commands(host_.commands());
     register_demo_loop_commands();
-    register_video_commands();
+    screen_->register_commands(
+        host_, [this] { console_->set_screen_size(screen_->width(), screen_->height()); });
     host_.set_file_reader([this](const std::string& path) -> std::optional<std::string> {
         std::string game = options_.game.value_or("id1");
         auto user = read_file(user_dir() + "/" + game + "/" + path);
@@ -216,7 +203,7 @@ bool Engine::start() {
     if (vfs_ && command_line_.command_text().empty() && !options_.benchmark && !quit_) {
         menu_->open(MenuScreen::Main);
     }
-    last_frame_seconds_ = seconds();
+    clock_.restart_frames();
     return true;
 }
 
@@ -243,25 +230,6 @@ void Engine::create_hud() {
     }
 }
 
-bool Engine::open_window() {
-    VideoOptions video;
-    video.width = options_.width.value_or(640);
-    video.height = options_.height.value_or(480);
-    video.fullscreen = options_.fullscreen.value_or(false);
-    auto window = VideoWindow::create(video);
-    if (!window) {
-        print("cannot open a window: " + window.error().message +
-              " (headless? try SDL_VIDEODRIVER=offscreen)");
-        exit_status_ = 1;
-        return false;
-    }
-    window_.emplace(std::move(window.value()));
-    keep_loaded_libraries_resident();  // the GL driver, not plugins: see resident_libraries.h
-    const GlInfo& gl = window_->gl_info();
-    print("GL_RENDERER: " + gl.renderer + "\nGL_VERSION: " + gl.version);
-    return true;
-}
-
 void Engine::load_initial_plugin() {
     if (frames_->plugins().active()) return;
     for (const std::string& name :
@@ -284,13 +252,12 @@ int Engine::run() {
 void Engine::frame() {
     FrameTrace& trace = timedemo_.trace();
     trace.begin_frame();
-    double now = seconds();
-    double frame_time = now - last_frame_seconds_;
-    last_frame_seconds_ = now;
+    const double now = FrameClock::now();
+    double frame_time = clock_.begin_frame(now);
     if (cvars_.host_framerate->value() > 0) frame_time = cvars_.host_framerate->value();
     handle_events();
     host_.commands().execute();
-    console_->update(now - start_seconds_);
+    console_->update(clock_.since_start(now));
     trace.lap(TraceStage::Input);
     // A paused demo draws the same instant again: timedemo does not count those frames.
     bool timing = demo_->active() && demo_->mode() == DemoMode::TimeDemo && !demo_->paused();
@@ -318,26 +285,25 @@ void Engine::frame() {
     update_sound(frame_time);
     trace.lap(TraceStage::Sound);
     trace.end_frame(timing);
-    if (first_frame_seconds_ < 0) {
-        first_frame_seconds_ = seconds() - start_seconds_;
-        print("start-up to first frame: " + std::to_string(first_frame_seconds_) + " s");
+    if (std::optional<double> startup = clock_.first_frame_done()) {
+        print("start-up to first frame: " + std::to_string(*startup) + " s");
     }
-    if (timing) timedemo_.record_frame(seconds() - now);
-    game_->frame_drawn(seconds() - now, game_timing);
+    if (timing) timedemo_.record_frame(FrameClock::now() - now);
+    game_->frame_drawn(FrameClock::now() - now, game_timing);
     // The attract loop (quake.rc's startdemos) is not the command line's job.
     timedemo_.update_command_line_job(demo_->active() && !demo_->live() && !demo_loop_.playing());
     if (!timing && cvars_.host_maxfps->value() > 0) {
-        double budget = 1.0 / cvars_.host_maxfps->value() - (seconds() - now);
+        double budget = 1.0 / cvars_.host_maxfps->value() - (FrameClock::now() - now);
         if (budget > 0) std::this_thread::sleep_for(std::chrono::duration<double>(budget));
     }
 }
 
 void Engine::handle_events() {
     InputEvent event;
-    while (window_->poll_event(event)) {
+    while (screen_->poll_event(event)) {
         if (event.type == InputEventType::Quit) quit_ = true;
         if (event.type == InputEventType::Resize) {
-            console_->set_screen_size(window_->drawable_width(), window_->drawable_height());
+            console_->set_screen_size(screen_->width(), screen_->height());
         }
         if (menu_takes_event(event)) continue;
         const bool playing = demo_->live() && !console_->is_open() && !menu_->active();
@@ -347,18 +313,17 @@ void Engine::handle_events() {
         if (event.type == InputEventType::FocusLost) input_->release_all();
         console_->handle_event(event);
     }
-    window_->set_text_input(console_->is_open());
-    const bool relative = demo_->live() && !console_->is_open() && !menu_->active();
-    if (relative != relative_mouse_) window_->set_relative_mouse(relative);
-    relative_mouse_ = relative;
+    screen_->set_text_input(console_->is_open());
+    // The mouse turns the view while a game runs and nothing is open.
+    screen_->set_relative_mouse(demo_->live() && !console_->is_open() && !menu_->active());
 }
 
 FrameSettings Engine::frame_settings() {
     FrameSettings settings;
-    settings.width = window_->drawable_width();
-    settings.height = window_->drawable_height();
+    settings.width = screen_->width();
+    settings.height = screen_->height();
     settings.fov_x = cvars_.fov->value();
-    settings.occlusion = cvars_.occlusion->value() != 0 && !multisampled_screen_;
+    settings.occlusion = cvars_.occlusion->value() != 0 && !screen_->multisampled();
     settings.view_model_lift =
         cvars_.viewmodel_quake->value() != 0 ? view_model_lift_for(hud_->viewsize()) : 0.0f;
     settings.draw_view_model = cvars_.draw_viewmodel->value() != 0;
@@ -368,7 +333,7 @@ FrameSettings Engine::frame_settings() {
 }
 
 void Engine::render(double frame_time) {
-    glViewport(0, 0, window_->drawable_width(), window_->drawable_height());
+    glViewport(0, 0, screen_->width(), screen_->height());
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // GPU time of paused frames stays out of the timedemo report, like their CPU time.
@@ -380,7 +345,7 @@ void Engine::render(double frame_time) {
         trace.set_gpu_frame(gpu_timers.frame_serial());
     }
     trace.lap(TraceStage::FrameStart);
-    double real_time = seconds() - start_seconds_;
+    double real_time = clock_.since_start(FrameClock::now());
     if (demo_->active() && demo_->level_ready()) {
         render_demo(real_time, static_cast<float>(frame_time));
     } else {
@@ -389,15 +354,10 @@ void Engine::render(double frame_time) {
     hud_->count_frame(real_time);
     draw_menu(real_time);
     if (console_drawer_) console_drawer_->draw(*console_);
-    if (gamma_pass_) {
-        gamma_pass_->apply(cvars_.gamma->value(), window_->drawable_width(),
-                           window_->drawable_height());
-    }
+    screen_->apply_gamma(cvars_.gamma->value());
     if (timed) gpu_timers.end_frame();
     trace.lap(TraceStage::Overlay);
-    throttle_.before_swap();
-    window_->swap();
-    throttle_.after_swap();
+    screen_->swap();
     trace.lap(TraceStage::Swap);
 }
 
@@ -405,8 +365,7 @@ void Engine::render_demo(double real_time, float frame_time) {
     const ViewResult view = frames_->draw_level(demo_->level(), demo_->client(), demo_->paused(),
                                                 real_time, frame_time, frame_settings());
     // Engine-drawn, whatever the plugin: the tints over the 3D view, then the status bar.
-    hud_->draw(demo_->client(), view.eye_contents, window_->drawable_width(),
-               window_->drawable_height(), real_time);
+    hud_->draw(demo_->client(), view.eye_contents, screen_->width(), screen_->height(), real_time);
 }
 
 void Engine::write_config() {

@@ -24,6 +24,8 @@
 #include "app/game/game_controller.h"
 #include "app/game_data.h"
 #include "app/obscurance_cvars.h"
+#include "app/shell/frame_clock.h"
+#include "app/shell/screen.h"
 #include "app/timedemo/timedemo_controller.h"
 #include "client/player_input.h"
 #include "console/console.h"
@@ -36,9 +38,6 @@
 #include "menu/menu.h"
 #include "plugin/plugin_host.h"
 #include "sound/game_sound.h"
-#include "video/frame_throttle.h"
-#include "video/gamma_pass.h"
-#include "video/video_window.h"
 
 namespace nq {
 
@@ -53,9 +52,6 @@ struct EngineCvars {
     Cvar* gamma = nullptr;
     Cvar* host_framerate = nullptr;
     Cvar* menu_scale = nullptr;
-    Cvar* vid_width = nullptr;
-    Cvar* vid_height = nullptr;
-    Cvar* vid_fullscreen = nullptr;
 };
 
 class Engine {
@@ -77,7 +73,6 @@ class Engine {
   private:
     // engine.cpp
     void mount_game_data();
-    bool open_window();
     void create_hud();  // after the window: the HUD's pictures go to the GPU
     void load_initial_plugin();
     void frame();
@@ -86,7 +81,6 @@ class Engine {
     // This frame's settings for the frame wing, from cvars and the screen.
     FrameSettings frame_settings();
     void handle_events();
-    double seconds() const;
     void write_config();
     std::string user_dir() const;
 
@@ -95,11 +89,6 @@ class Engine {
     bool menu_takes_event(const InputEvent& event);
     HudScreen menu_screen() const;
     void draw_menu(double real_time);
-
-    // video_commands.cpp
-    void register_video_commands();
-    bool video_mode_locked() const;
-    void restart_video();
 
     // demo_loop_commands.cpp
     void register_demo_loop_commands();
@@ -129,13 +118,11 @@ class Engine {
     ObscuranceCvars obscurance_cvars_;
     std::optional<Vfs> vfs_;
     GameData game_data_;
-    std::optional<VideoWindow> window_;
-    TimedemoController timedemo_;  // its GPU timers go while the context is still there
-    FrameThrottle throttle_;       // after window_: goes while the context is still there
+    std::unique_ptr<Screen> screen_;  // the window: it goes last, with the GL context
+    TimedemoController timedemo_;     // its GPU timers go while the context is still there
     std::unique_ptr<Console> console_;
     std::optional<ConsoleDrawer> console_drawer_;
     std::unique_ptr<Hud> hud_;
-    std::optional<GammaPass> gamma_pass_;
     std::unique_ptr<FrameRenderer> frames_;  // plugins, their models, the frame drawn
     std::unique_ptr<DemoSession> demo_;
     std::unique_ptr<PlayerInput> input_;
@@ -145,12 +132,8 @@ class Engine {
     std::unique_ptr<GameController> game_;  // after demo_ and input_, which it plays through
     std::unique_ptr<GameSound> sound_;
 
-    double start_seconds_ = 0;
-    double last_frame_seconds_ = 0;
-    double first_frame_seconds_ = -1;  // for the start-up-to-first-frame report
+    FrameClock clock_;
     bool quit_ = false;
-    bool relative_mouse_ = false;       // the mouse turns the view (a game runs, nothing open)
-    bool multisampled_screen_ = false;  // occlusion culling is then off
     int exit_status_ = 0;
 };
 

@@ -160,10 +160,10 @@ TimedemoRun Engine::describe_run() const {
     // A run that failed at start-up failed before the plugin loaded: the one it was to use.
     run.plugin =
         frames_->plugins().active() ? frames_->plugins().active_name() : cvars_.r_plugin->string();
-    run.width = window_->drawable_width();
-    run.height = window_->drawable_height();
-    run.gl_renderer = window_->gl_info().renderer;
-    run.gl_version = window_->gl_info().version;
+    run.width = screen_->width();
+    run.height = screen_->height();
+    run.gl_renderer = screen_->gl_info().renderer;
+    run.gl_version = screen_->gl_info().version;
     return run;
 }
 
@@ -177,8 +177,7 @@ void Engine::screenshot(const std::string& name) {
         if (!next) return print("screenshot: " + next.error().message);
         path = next.value();
     }
-    std::string error =
-        save_screenshot(path, 0, window_->drawable_width(), window_->drawable_height());
+    std::string error = save_screenshot(path, 0, screen_->width(), screen_->height());
     print(error.empty() ? "wrote " + path : "screenshot: " + error);
 }
 

@@ -108,8 +108,7 @@ bool Engine::menu_takes_event(const InputEvent& event) {
 }
 
 HudScreen Engine::menu_screen() const {
-    return HudScreen{window_->drawable_width(), window_->drawable_height(),
-                     cvars_.menu_scale->value()};
+    return HudScreen{screen_->width(), screen_->height(), cvars_.menu_scale->value()};
 }
 
 void Engine::draw_menu(double real_time) {
