@@ -37,11 +37,9 @@ Engine::Engine(const CommandLine& command_line)
 }
 
 Engine::~Engine() {
-    if (game_) game_->stop_recording();
-    game_.reset();
     menu_.reset();
-    sound_.reset();  // the device's callback stops before anything it reads goes
-    demo_.reset();
+    sound_.reset();     // the device's callback stops before anything it reads goes
+    sessions_.reset();  // a recording ends here
     frames_.reset();
     hud_.reset();
     console_drawer_.reset();
@@ -106,7 +104,6 @@ bool Engine::start() {
         if (!vfs_) return Error{path, 0, "no game data mounted"};
         return vfs_->read(path);
     });
-    input_ = std::make_unique<PlayerInput>(host_.commands());
     cvars_.gamma = host_.cvars().register_cvar(
         {"gamma", "1", kCvarArchive,
          "brightness: each colour becomes colour^gamma (below 1 brighter; 1 costs nothing)", 0.3f,
@@ -144,45 +141,36 @@ bool Engine::start() {
     frame.plugin_dir = command_line_.value("-plugindir").value_or(executable_dir() + "/plugins");
     frame.print = [this](std::string_view text) { print(text); };
     frame.session_world = [this]() -> const Bsp* {
-        return demo_ && demo_->active() ? demo_->level().world_bsp() : nullptr;
+        return sessions_ && sessions_->session().active() ? sessions_->session().level().world_bsp()
+                                                          : nullptr;
     };
     frames_ = std::make_unique<FrameRenderer>(std::move(frame));
 
-    DemoSessionCallbacks callbacks;
-    callbacks.print = [this](std::string_view t) { print(t); };
-    callbacks.center_print = [this](std::string_view t) { console_->center_print(t); };
-    // Commands inside demos are shown, not run: a downloaded demo must not drive the console.
-    // Our own game's server is trusted (QuakeC's stuffcmd: bonus flashes, cvars).
-    callbacks.stuff_text = [this](std::string_view text) {
-        if (demo_ && demo_->live()) host_.commands().add_text(text);
-    };
-    callbacks.level_unloading = [this] { frames_->release_level_models(); };
-    callbacks.level_loaded = [this](Level& level) {
+    SessionContext sessions;
+    sessions.host = &host_;
+    sessions.vfs = vfs_ ? &*vfs_ : nullptr;
+    sessions.options = &options_;
+    sessions.timedemo = &timedemo_;
+    sessions.user_game_dir = user_dir() + "/" + options_.game.value_or("id1");
+    sessions.palette = game_data_.palette_bytes();
+    sessions.print = [this](std::string_view t) { print(t); };
+    sessions.center_print = [this](std::string_view t) { console_->center_print(t); };
+    sessions.show_showroom = [this](bool on) { frames_->show_showroom(on); };
+    sessions.describe_renderer = [this] { return describe_renderer(); };
+    sessions.quitting = [this] { return quit_; };
+    sessions.level_unloading = [this] { frames_->release_level_models(); };
+    sessions.level_loaded = [this](Level& level) {
         frames_->register_level_models(level, frame_settings());
     };
-    callbacks.level_restarted = [this](Level& level) {
+    sessions.level_restarted = [this](Level& level) {
         frames_->level_restarted(level, frame_settings());
     };
-    demo_ = std::make_unique<DemoSession>(vfs_ ? &*vfs_ : nullptr, std::move(callbacks));
-    demo_->level().set_palette(
-        game_data_.palette_bytes());  // surface colours for the ambient cube field
-    demo_->set_user_dir(user_dir() + "/" + options_.game.value_or("id1"));
-    GameContext game;
-    game.host = &host_;
-    game.session = demo_.get();
-    game.input = input_.get();
-    game.vfs = vfs_ ? &*vfs_ : nullptr;
-    game.user_game_dir = user_dir() + "/" + options_.game.value_or("id1");
-    game.print = [this](std::string_view t) { print(t); };
-    game.begin_game = [this](std::unique_ptr<LiveGame> g, const std::string& map) {
-        begin_game(std::move(g), map);
-    };
-    game_ = std::make_unique<GameController>(std::move(game));
+    sessions_ = std::make_unique<SessionController>(std::move(sessions));
 
     create_menu();
     register_commands();
     timedemo_.register_commands(host_.commands());
-    register_demo_loop_commands();
+    sessions_->register_commands();
     screen_->register_commands(
         host_, [this] { console_->set_screen_size(screen_->width(), screen_->height()); });
     host_.set_file_reader([this](const std::string& path) -> std::optional<std::string> {
@@ -198,7 +186,7 @@ bool Engine::start() {
     timedemo_.queue_benchmark();
     host_.commands().execute();  // quake.rc (or config.cfg, autoexec.cfg), the +commands
     load_initial_plugin();
-    if (!vfs_ && !demo_->active()) frames_->show_showroom(true);
+    if (!vfs_ && !sessions_->session().active()) frames_->show_showroom(true);
     // Quake's start without +commands: the menu, over the demo loop if there is one.
     if (vfs_ && command_line_.command_text().empty() && !options_.benchmark && !quit_) {
         menu_->open(MenuScreen::Main);
@@ -259,40 +247,19 @@ void Engine::frame() {
     host_.commands().execute();
     console_->update(clock_.since_start(now));
     trace.lap(TraceStage::Input);
-    // A paused demo draws the same instant again: timedemo does not count those frames.
-    bool timing = demo_->active() && demo_->mode() == DemoMode::TimeDemo && !demo_->paused();
-    const bool game_timing = demo_->live() && !demo_->paused();
-    if (demo_->active()) {
-        FrameStatus status = FrameStatus::Playing;
-        if (demo_->live()) {
-            // A single-player game waits while the menu or the console is open, as in Quake.
-            const bool waiting = menu_->active() || console_->is_open();
-            status = game_->run_frame(waiting ? 0.0 : frame_time, console_->is_open());
-        } else {
-            status = demo_->frame(frame_time);
-        }
-        if (const DemoPlayer* player = demo_->player()) timedemo_.run_schedule(player->frames());
-        trace.lap(TraceStage::Demo);
-        if (status == FrameStatus::Ended) {
-            const bool next_in_loop = demo_loop_.playing();
-            const bool failed = !demo_->failure().empty();
-            end_demo();
-            timing = false;
-            if (next_in_loop && !quit_) continue_demo_loop(failed);
-        }
-    }
+    const SessionFrame session = sessions_->run_frame(
+        frame_time, menu_->active() || console_->is_open(), console_->is_open());
+    if (session.ran) trace.lap(TraceStage::Demo);
     render(frame_time);
     update_sound(frame_time);
     trace.lap(TraceStage::Sound);
-    trace.end_frame(timing);
+    trace.end_frame(session.timedemo_frame);
     if (std::optional<double> startup = clock_.first_frame_done()) {
         print("start-up to first frame: " + std::to_string(*startup) + " s");
     }
-    if (timing) timedemo_.record_frame(FrameClock::now() - now);
-    game_->frame_drawn(FrameClock::now() - now, game_timing);
-    // The attract loop (quake.rc's startdemos) is not the command line's job.
-    timedemo_.update_command_line_job(demo_->active() && !demo_->live() && !demo_loop_.playing());
-    if (!timing && cvars_.host_maxfps->value() > 0) {
+    if (session.timedemo_frame) timedemo_.record_frame(FrameClock::now() - now);
+    sessions_->frame_drawn(FrameClock::now() - now, session);
+    if (!session.timedemo_frame && cvars_.host_maxfps->value() > 0) {
         double budget = 1.0 / cvars_.host_maxfps->value() - (FrameClock::now() - now);
         if (budget > 0) std::this_thread::sleep_for(std::chrono::duration<double>(budget));
     }
@@ -306,16 +273,18 @@ void Engine::handle_events() {
             console_->set_screen_size(screen_->width(), screen_->height());
         }
         if (menu_takes_event(event)) continue;
-        const bool playing = demo_->live() && !console_->is_open() && !menu_->active();
+        const bool playing =
+            sessions_->session().live() && !console_->is_open() && !menu_->active();
         if (event.type == InputEventType::MouseMotion && playing) {
-            input_->add_mouse(float(event.dx), float(event.dy));
+            sessions_->input().add_mouse(float(event.dx), float(event.dy));
         }
-        if (event.type == InputEventType::FocusLost) input_->release_all();
+        if (event.type == InputEventType::FocusLost) sessions_->input().release_all();
         console_->handle_event(event);
     }
     screen_->set_text_input(console_->is_open());
     // The mouse turns the view while a game runs and nothing is open.
-    screen_->set_relative_mouse(demo_->live() && !console_->is_open() && !menu_->active());
+    screen_->set_relative_mouse(sessions_->session().live() && !console_->is_open() &&
+                                !menu_->active());
 }
 
 FrameSettings Engine::frame_settings() {
@@ -337,7 +306,7 @@ void Engine::render(double frame_time) {
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // GPU time of paused frames stays out of the timedemo report, like their CPU time.
-    bool timed = !demo_->paused();
+    bool timed = !sessions_->session().paused();
     GpuPassTimers& gpu_timers = timedemo_.gpu_timers();
     FrameTrace& trace = timedemo_.trace();
     if (timed) {
@@ -346,7 +315,7 @@ void Engine::render(double frame_time) {
     }
     trace.lap(TraceStage::FrameStart);
     double real_time = clock_.since_start(FrameClock::now());
-    if (demo_->active() && demo_->level_ready()) {
+    if (sessions_->session().active() && sessions_->session().level_ready()) {
         render_demo(real_time, static_cast<float>(frame_time));
     } else {
         frames_->draw_showroom(real_time, static_cast<float>(frame_time), frame_settings());
@@ -362,10 +331,12 @@ void Engine::render(double frame_time) {
 }
 
 void Engine::render_demo(double real_time, float frame_time) {
-    const ViewResult view = frames_->draw_level(demo_->level(), demo_->client(), demo_->paused(),
-                                                real_time, frame_time, frame_settings());
+    const ViewResult view =
+        frames_->draw_level(sessions_->session().level(), sessions_->session().client(),
+                            sessions_->session().paused(), real_time, frame_time, frame_settings());
     // Engine-drawn, whatever the plugin: the tints over the 3D view, then the status bar.
-    hud_->draw(demo_->client(), view.eye_contents, screen_->width(), screen_->height(), real_time);
+    hud_->draw(sessions_->session().client(), view.eye_contents, screen_->width(),
+               screen_->height(), real_time);
 }
 
 void Engine::write_config() {

@@ -13,21 +13,18 @@
 #include <string>
 #include <vector>
 
-#include "app/demo_loop.h"
-#include "app/demo_session.h"
 #include "app/engine_menu.h"
 #include "app/frame/frame_renderer.h"
 #include "app/frame/host_services.h"
 #include "app/frame/render_dispatch.h"
 #include "app/frame/scene_builder.h"
 #include "app/frame/showroom.h"
-#include "app/game/game_controller.h"
-#include "app/game_data.h"
 #include "app/obscurance_cvars.h"
+#include "app/sessions/session_controller.h"
 #include "app/shell/frame_clock.h"
+#include "app/shell/game_data.h"
 #include "app/shell/screen.h"
 #include "app/timedemo/timedemo_controller.h"
-#include "client/player_input.h"
 #include "console/console.h"
 #include "console/console_drawer.h"
 #include "fs/vfs.h"
@@ -90,25 +87,14 @@ class Engine {
     HudScreen menu_screen() const;
     void draw_menu(double real_time);
 
-    // demo_loop_commands.cpp
-    void register_demo_loop_commands();
-    void start_demo_loop(const CommandArgs& args);
-    void play_next_loop_demo();
-    void continue_demo_loop(bool failed);
     // engine_sound.cpp
     void update_sound(double frame_time);
 
     // engine_commands.cpp
     void register_commands();
-    void start_demo(const std::string& name, DemoMode mode);
-    void end_demo();
-    // A game (GameController: map, load) replaces the demo or showroom on screen.
-    void begin_game(std::unique_ptr<LiveGame> game, const std::string& map);
-    void pause_demo(const CommandArgs& args);
-    // The demo being played as the timedemo wing reports it.
-    TimedemoRun describe_run() const;
+    // The renderer and screen of a timedemo run, as the timedemo wing reports them.
+    TimedemoRun describe_renderer() const;
     void screenshot(const std::string& name);
-    void print_view_position();
     void swap_plugin(const std::string& name);
 
     CommandLine command_line_;
@@ -123,13 +109,10 @@ class Engine {
     std::unique_ptr<Console> console_;
     std::optional<ConsoleDrawer> console_drawer_;
     std::unique_ptr<Hud> hud_;
-    std::unique_ptr<FrameRenderer> frames_;  // plugins, their models, the frame drawn
-    std::unique_ptr<DemoSession> demo_;
-    std::unique_ptr<PlayerInput> input_;
+    std::unique_ptr<FrameRenderer> frames_;        // plugins, their models, the frame drawn
+    std::unique_ptr<SessionController> sessions_;  // the demo or game played, the demo loop
     std::unique_ptr<EngineMenuServices> menu_services_;
     std::unique_ptr<Menu> menu_;  // after hud_ and frames_, whose pictures and styles it shows
-    DemoLoop demo_loop_;
-    std::unique_ptr<GameController> game_;  // after demo_ and input_, which it plays through
     std::unique_ptr<GameSound> sound_;
 
     FrameClock clock_;

@@ -68,7 +68,8 @@ bool EngineMenuServices::game_running() const {
 
 void Engine::create_menu() {
     const std::string save_dir = user_dir() + "/" + options_.game.value_or("id1");
-    menu_services_ = std::make_unique<EngineMenuServices>(frames_->plugins(), *demo_, save_dir);
+    menu_services_ =
+        std::make_unique<EngineMenuServices>(frames_->plugins(), sessions_->session(), save_dir);
     menu_ = std::make_unique<Menu>(host_, *menu_services_);
     int pages = 0;
     if (const HudDrawer* drawer = hud_->drawer()) {
@@ -94,7 +95,7 @@ bool Engine::menu_takes_event(const InputEvent& event) {
     if (key == "ESCAPE" && !event.repeat) {
         if (console_->is_open()) {
             console_->set_open(false);
-            if (!demo_->active() && !menu_->active()) menu_->open(MenuScreen::Main);
+            if (!sessions_->session().active() && !menu_->active()) menu_->open(MenuScreen::Main);
         } else if (menu_->active()) {
             menu_->key_down(key);
         } else {

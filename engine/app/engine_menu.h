@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/demo_session.h"
+#include "app/sessions/demo_session.h"
 #include "menu/menu.h"
 #include "plugin/plugin_host.h"
 

@@ -6,13 +6,13 @@ namespace nq {
 
 void Engine::update_sound(double frame_time) {
     SoundFrame frame;
-    if (demo_->active()) {
-        frame.client = &demo_->client();
-        frame.session = demo_->starts();
-        frame.timedemo = demo_->mode() == DemoMode::TimeDemo;
-        frame.world = demo_->level().world_bsp();
+    if (sessions_->session().active()) {
+        frame.client = &sessions_->session().client();
+        frame.session = sessions_->session().starts();
+        frame.timedemo = sessions_->session().mode() == DemoMode::TimeDemo;
+        frame.world = sessions_->session().level().world_bsp();
     }
-    frame.paused = demo_->paused();
+    frame.paused = sessions_->session().paused();
     frame.listener = frames_->listener();
     sound_->update(frame_time, frame);
 }

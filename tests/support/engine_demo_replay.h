@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "app/level.h"
+#include "app/sessions/level.h"
 #include "client/client_state.h"
 #include "client/demo_player.h"
 #include "client/view.h"

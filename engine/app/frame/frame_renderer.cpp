@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "app/game_data.h"
+#include "app/shell/game_data.h"
 #include "formats/bsp.h"
 #include "video/frame_trace.h"
 #include "video/video_window.h"

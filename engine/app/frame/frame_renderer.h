@@ -15,7 +15,7 @@
 #include "app/frame/render_dispatch.h"
 #include "app/frame/scene_builder.h"
 #include "app/frame/showroom.h"
-#include "app/level.h"
+#include "app/sessions/level.h"
 #include "client/client_state.h"
 #include "client/view.h"
 #include "obscurance/obscurance_settings.h"

@@ -6,7 +6,7 @@
 #include <functional>
 #include <string_view>
 
-#include "app/plugin_commands.h"
+#include "app/frame/plugin_commands.h"
 #include "host/host_core.h"
 #include "plugin/engine_services.h"
 

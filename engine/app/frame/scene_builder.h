@@ -7,7 +7,7 @@
 #include <array>
 #include <vector>
 
-#include "app/level.h"
+#include "app/sessions/level.h"
 #include "client/client_state.h"
 #include "client/view.h"
 #include "client/visible_entities.h"

@@ -11,8 +11,8 @@
 #include <string>
 #include <string_view>
 
-#include "app/demo_session.h"
 #include "app/game/engine_server_host.h"
+#include "app/sessions/demo_session.h"
 #include "client/player_input.h"
 #include "host/host_core.h"
 #include "server/server.h"

@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include "app/demo_session.h"
+#include "app/sessions/demo_session.h"
 #include "app/game/game_controller.h"
 #include "common/file_io.h"
 #include "formats/dem.h"

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "app/frame/frame_renderer.h"
-#include "app/game_data.h"
+#include "app/shell/game_data.h"
 #include "app/shell/frame_clock.h"
 #include "app/shell/screen.h"
 #include "support/build_paths.h"

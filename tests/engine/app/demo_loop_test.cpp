@@ -2,7 +2,7 @@
 // only once every demo of it has failed one after another.
 #include <gtest/gtest.h>
 
-#include "app/demo_loop.h"
+#include "app/sessions/demo_loop.h"
 
 namespace nq {
 namespace {

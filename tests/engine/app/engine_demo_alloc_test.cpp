@@ -13,7 +13,7 @@
 
 #include <string_view>
 
-#include "app/demo_session.h"
+#include "app/sessions/demo_session.h"
 #include "app/frame/scene_builder.h"
 #include "client/view_blend.h"
 #include "support/engine_demo_replay.h"

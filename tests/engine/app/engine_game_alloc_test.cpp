@@ -4,7 +4,7 @@
 // applying the messages, interpolation and effects — runs without a heap allocation.
 #include <gtest/gtest.h>
 
-#include "app/live_game.h"
+#include "app/sessions/live_game.h"
 #include "common/file_io.h"
 #include "server/monster_waking.h"
 #include "server/server_commands.h"

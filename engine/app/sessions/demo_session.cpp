@@ -1,4 +1,4 @@
-#include "app/demo_session.h"
+#include "app/sessions/demo_session.h"
 
 #include <filesystem>
 

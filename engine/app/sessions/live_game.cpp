@@ -1,4 +1,4 @@
-#include "app/live_game.h"
+#include "app/sessions/live_game.h"
 
 #include <cmath>
 

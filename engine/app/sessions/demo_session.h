@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "app/level.h"
-#include "app/live_game.h"
+#include "app/sessions/level.h"
+#include "app/sessions/live_game.h"
 #include "client/demo_player.h"
 
 namespace nq {

@@ -1,4 +1,4 @@
-#include "app/game_data.h"
+#include "app/shell/game_data.h"
 
 #include "app/frame/showroom.h"
 #include "fs/vfs.h"

@@ -1,4 +1,4 @@
-#include "app/demo_loop.h"
+#include "app/sessions/demo_loop.h"
 
 namespace nq {
 

@@ -1,4 +1,4 @@
-#include "app/plugin_commands.h"
+#include "app/frame/plugin_commands.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 // LiveGame::load: a saved game in place of a new level; the client then receives its signon
 // like any other level's.
-#include "app/live_game.h"
+#include "app/sessions/live_game.h"
 #include "server/savegame.h"
 
 namespace nq {

@@ -1,4 +1,4 @@
-#include "app/level.h"
+#include "app/sessions/level.h"
 
 #include <algorithm>
 #include <chrono>
