@@ -9,7 +9,6 @@
 #include <thread>
 
 #include "common/file_io.h"
-#include "console/console_font.h"
 #include "formats/bsp.h"
 #include "host/config_writer.h"
 
@@ -37,12 +36,10 @@ Engine::Engine(const CommandLine& command_line)
 }
 
 Engine::~Engine() {
-    menu_.reset();
+    overlay_.reset();   // the menu reads the session and the plugins
     sound_.reset();     // the device's callback stops before anything it reads goes
     sessions_.reset();  // a recording ends here
     frames_.reset();
-    hud_.reset();
-    console_drawer_.reset();
     timedemo_.gpu_timers().shutdown();
 }
 
@@ -51,7 +48,7 @@ void Engine::print(std::string_view text) {
     if (line.empty() || line.back() != '\n') line += '\n';
     std::fwrite(line.data(), 1, line.size(), stdout);
     std::fflush(stdout);
-    if (console_) console_->print(line);
+    if (overlay_) overlay_->console().print(line);
 }
 
 std::string Engine::user_dir() const {
@@ -117,19 +114,9 @@ bool Engine::start() {
         return false;
     }
     screen_ = std::move(screen.value());
-    console_ = std::make_unique<Console>(host_);
-    console_->set_screen_size(screen_->width(), screen_->height());
-    if (auto drawer = ConsoleDrawer::create()) {
-        console_drawer_.emplace(std::move(drawer.value()));
-        if (game_data_.gfx_wad && game_data_.palette) {
-            if (auto font = load_conchars_font(*game_data_.gfx_wad, *game_data_.palette)) {
-                console_drawer_->set_font(font.value());
-            }
-        }
-    } else {
-        print("console: " + drawer.error().message);
-    }
-    create_hud();
+    overlay_ = std::make_unique<Overlay>(host_, game_data_, vfs_ ? &*vfs_ : nullptr,
+                                         screen_->width(), screen_->height());
+    for (const std::string& line : overlay_->take_start_messages()) print(line);
     timedemo_.gpu_timers().init(true);
 
     FrameRendererContext frame;
@@ -154,7 +141,7 @@ bool Engine::start() {
     sessions.user_game_dir = user_dir() + "/" + options_.game.value_or("id1");
     sessions.palette = game_data_.palette_bytes();
     sessions.print = [this](std::string_view t) { print(t); };
-    sessions.center_print = [this](std::string_view t) { console_->center_print(t); };
+    sessions.center_print = [this](std::string_view t) { overlay_->console().center_print(t); };
     sessions.show_showroom = [this](bool on) { frames_->show_showroom(on); };
     sessions.describe_renderer = [this] { return describe_renderer(); };
     sessions.quitting = [this] { return quit_; };
@@ -167,12 +154,14 @@ bool Engine::start() {
     };
     sessions_ = std::make_unique<SessionController>(std::move(sessions));
 
-    create_menu();
+    overlay_->create_menu(frames_->plugins(), sessions_->session(),
+                          user_dir() + "/" + options_.game.value_or("id1"));
     register_commands();
     timedemo_.register_commands(host_.commands());
     sessions_->register_commands();
-    screen_->register_commands(
-        host_, [this] { console_->set_screen_size(screen_->width(), screen_->height()); });
+    screen_->register_commands(host_, [this] {
+        overlay_->console().set_screen_size(screen_->width(), screen_->height());
+    });
     host_.set_file_reader([this](const std::string& path) -> std::optional<std::string> {
         std::string game = options_.game.value_or("id1");
         auto user = read_file(user_dir() + "/" + game + "/" + path);
@@ -189,7 +178,7 @@ bool Engine::start() {
     if (!vfs_ && !sessions_->session().active()) frames_->show_showroom(true);
     // Quake's start without +commands: the menu, over the demo loop if there is one.
     if (vfs_ && command_line_.command_text().empty() && !options_.benchmark && !quit_) {
-        menu_->open(MenuScreen::Main);
+        overlay_->menu().open(MenuScreen::Main);
     }
     clock_.restart_frames();
     return true;
@@ -207,15 +196,6 @@ void Engine::mount_game_data() {
     for (const auto& w : vfs_->warnings()) print("warning: " + w);
     game_data_ = load_game_data(&*vfs_);
     for (const auto& w : game_data_.warnings) print("warning: " + w);
-}
-
-void Engine::create_hud() {
-    hud_ = std::make_unique<Hud>(host_);
-    const Wad* gfx_wad = game_data_.gfx_wad ? &*game_data_.gfx_wad : nullptr;
-    const Palette* palette = game_data_.palette ? &*game_data_.palette : nullptr;
-    for (const std::string& line : hud_->load_pictures(gfx_wad, palette, vfs_ ? &*vfs_ : nullptr)) {
-        print(line);
-    }
 }
 
 void Engine::load_initial_plugin() {
@@ -245,10 +225,10 @@ void Engine::frame() {
     if (cvars_.host_framerate->value() > 0) frame_time = cvars_.host_framerate->value();
     handle_events();
     host_.commands().execute();
-    console_->update(clock_.since_start(now));
+    overlay_->console().update(clock_.since_start(now));
     trace.lap(TraceStage::Input);
-    const SessionFrame session = sessions_->run_frame(
-        frame_time, menu_->active() || console_->is_open(), console_->is_open());
+    const SessionFrame session =
+        sessions_->run_frame(frame_time, overlay_->open(), overlay_->console().is_open());
     if (session.ran) trace.lap(TraceStage::Demo);
     render(frame_time);
     update_sound(frame_time);
@@ -270,21 +250,21 @@ void Engine::handle_events() {
     while (screen_->poll_event(event)) {
         if (event.type == InputEventType::Quit) quit_ = true;
         if (event.type == InputEventType::Resize) {
-            console_->set_screen_size(screen_->width(), screen_->height());
+            overlay_->console().set_screen_size(screen_->width(), screen_->height());
         }
-        if (menu_takes_event(event)) continue;
-        const bool playing =
-            sessions_->session().live() && !console_->is_open() && !menu_->active();
+        if (overlay_->menu_takes_event(event, sessions_->session().active(), menu_screen())) {
+            continue;
+        }
+        const bool playing = sessions_->session().live() && !overlay_->open();
         if (event.type == InputEventType::MouseMotion && playing) {
             sessions_->input().add_mouse(float(event.dx), float(event.dy));
         }
         if (event.type == InputEventType::FocusLost) sessions_->input().release_all();
-        console_->handle_event(event);
+        overlay_->console().handle_event(event);
     }
-    screen_->set_text_input(console_->is_open());
+    screen_->set_text_input(overlay_->console().is_open());
     // The mouse turns the view while a game runs and nothing is open.
-    screen_->set_relative_mouse(sessions_->session().live() && !console_->is_open() &&
-                                !menu_->active());
+    screen_->set_relative_mouse(sessions_->session().live() && !overlay_->open());
 }
 
 FrameSettings Engine::frame_settings() {
@@ -293,8 +273,9 @@ FrameSettings Engine::frame_settings() {
     settings.height = screen_->height();
     settings.fov_x = cvars_.fov->value();
     settings.occlusion = cvars_.occlusion->value() != 0 && !screen_->multisampled();
-    settings.view_model_lift =
-        cvars_.viewmodel_quake->value() != 0 ? view_model_lift_for(hud_->viewsize()) : 0.0f;
+    settings.view_model_lift = cvars_.viewmodel_quake->value() != 0
+                                   ? view_model_lift_for(overlay_->hud().viewsize())
+                                   : 0.0f;
     settings.draw_view_model = cvars_.draw_viewmodel->value() != 0;
     settings.showroom_time = cvars_.showroom_time->value();
     settings.obscurance = obscurance_cvars_.settings();
@@ -320,9 +301,7 @@ void Engine::render(double frame_time) {
     } else {
         frames_->draw_showroom(real_time, static_cast<float>(frame_time), frame_settings());
     }
-    hud_->count_frame(real_time);
-    draw_menu(real_time);
-    if (console_drawer_) console_drawer_->draw(*console_);
+    overlay_->draw(real_time, menu_screen());
     screen_->apply_gamma(cvars_.gamma->value());
     if (timed) gpu_timers.end_frame();
     trace.lap(TraceStage::Overlay);
@@ -335,8 +314,8 @@ void Engine::render_demo(double real_time, float frame_time) {
         frames_->draw_level(sessions_->session().level(), sessions_->session().client(),
                             sessions_->session().paused(), real_time, frame_time, frame_settings());
     // Engine-drawn, whatever the plugin: the tints over the 3D view, then the status bar.
-    hud_->draw(sessions_->session().client(), view.eye_contents, screen_->width(),
-               screen_->height(), real_time);
+    overlay_->hud().draw(sessions_->session().client(), view.eye_contents, screen_->width(),
+                         screen_->height(), real_time);
 }
 
 void Engine::write_config() {
@@ -345,6 +324,10 @@ void Engine::write_config() {
     std::filesystem::create_directories(dir, ec);
     std::string error = ::nq::save_config(dir + "/" + kConfigFile, host_.cvars(), host_.bindings());
     if (!error.empty()) print("config: " + error);
+}
+
+HudScreen Engine::menu_screen() const {
+    return HudScreen{screen_->width(), screen_->height(), cvars_.menu_scale->value()};
 }
 
 int run_nprquake(int argc, char** argv) {

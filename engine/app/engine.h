@@ -13,7 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "app/engine_menu.h"
 #include "app/frame/frame_renderer.h"
 #include "app/frame/host_services.h"
 #include "app/frame/render_dispatch.h"
@@ -23,16 +22,13 @@
 #include "app/sessions/session_controller.h"
 #include "app/shell/frame_clock.h"
 #include "app/shell/game_data.h"
+#include "app/shell/overlay.h"
 #include "app/shell/screen.h"
 #include "app/timedemo/timedemo_controller.h"
-#include "console/console.h"
-#include "console/console_drawer.h"
 #include "fs/vfs.h"
 #include "host/command_line.h"
 #include "host/host_core.h"
 #include "host/launch_options.h"
-#include "hud/hud.h"
-#include "menu/menu.h"
 #include "plugin/plugin_host.h"
 #include "sound/game_sound.h"
 
@@ -70,7 +66,6 @@ class Engine {
   private:
     // engine.cpp
     void mount_game_data();
-    void create_hud();  // after the window: the HUD's pictures go to the GPU
     void load_initial_plugin();
     void frame();
     void render(double frame_time);
@@ -81,11 +76,7 @@ class Engine {
     void write_config();
     std::string user_dir() const;
 
-    // engine_menu.cpp
-    void create_menu();
-    bool menu_takes_event(const InputEvent& event);
-    HudScreen menu_screen() const;
-    void draw_menu(double real_time);
+    HudScreen menu_screen() const;  // the menu's canvas on this screen
 
     // engine_sound.cpp
     void update_sound(double frame_time);
@@ -104,15 +95,11 @@ class Engine {
     ObscuranceCvars obscurance_cvars_;
     std::optional<Vfs> vfs_;
     GameData game_data_;
-    std::unique_ptr<Screen> screen_;  // the window: it goes last, with the GL context
-    TimedemoController timedemo_;     // its GPU timers go while the context is still there
-    std::unique_ptr<Console> console_;
-    std::optional<ConsoleDrawer> console_drawer_;
-    std::unique_ptr<Hud> hud_;
-    std::unique_ptr<FrameRenderer> frames_;        // plugins, their models, the frame drawn
+    std::unique_ptr<Screen> screen_;         // the window: it goes last, with the GL context
+    TimedemoController timedemo_;            // its GPU timers go while the context is still there
+    std::unique_ptr<Overlay> overlay_;       // HUD, menu and console over every frame
+    std::unique_ptr<FrameRenderer> frames_;  // plugins, their models, the frame drawn
     std::unique_ptr<SessionController> sessions_;  // the demo or game played, the demo loop
-    std::unique_ptr<EngineMenuServices> menu_services_;
-    std::unique_ptr<Menu> menu_;  // after hud_ and frames_, whose pictures and styles it shows
     std::unique_ptr<GameSound> sound_;
 
     FrameClock clock_;

@@ -2,7 +2,8 @@
 // command line asks for, the gamma pass on real pixels, vid_restart's locked and fixed-mode
 // answers, the vid_* cvars' defaults), the FrameClock (frame durations, the one start-up
 // report) and the FrameRenderer (the showroom drawn by a real plugin, a failed swap keeping
-// the current plugin, models gone with the showroom).
+// the current plugin, models gone with the showroom), and the Overlay (which keys are the
+// menu's, ESCAPE over the console, the menu drawn over the frame).
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
@@ -12,10 +13,14 @@
 #include <thread>
 
 #include "app/frame/frame_renderer.h"
-#include "app/shell/game_data.h"
+#include "app/sessions/demo_session.h"
 #include "app/shell/frame_clock.h"
+#include "app/shell/game_data.h"
+#include "app/shell/overlay.h"
 #include "app/shell/screen.h"
+#include "fs/vfs.h"
 #include "support/build_paths.h"
+#include "support/test_data.h"
 #include "video/frame_trace.h"
 #include "video/gpu_pass_timers.h"
 
@@ -189,6 +194,88 @@ TEST_F(FrameRendererTest, AFailedSwapKeepsTheCurrentPlugin) {
     EXPECT_EQ(frames_->plugins().active_name(), "classic");
     frames_->show_showroom(true);
     EXPECT_GT(colours_drawn(), 20u);
+}
+
+InputEvent key(const char* name, bool down = true) {
+    InputEvent event;
+    event.type = InputEventType::Key;
+    event.key = name;
+    event.down = down;
+    return event;
+}
+
+class OverlayTest : public FrameRendererTest {
+  protected:
+    void SetUp() override {
+        FrameRendererTest::SetUp();
+        if (HasFatalFailure()) return;
+        DemoSessionCallbacks callbacks;
+        callbacks.print = [](std::string_view) {};
+        callbacks.center_print = [](std::string_view) {};
+        callbacks.stuff_text = [](std::string_view) {};
+        callbacks.level_unloading = [] {};
+        callbacks.level_loaded = [](Level&) {};
+        callbacks.level_restarted = [](Level&) {};
+        session_.emplace(nullptr, std::move(callbacks));
+        // The real data: the menu's and the console's pictures come from gfx.wad.
+        auto vfs = Vfs::mount(VfsConfig::for_game(test::data_root(), "lq1"));
+        ASSERT_TRUE(vfs) << vfs.error().message;
+        vfs_.emplace(std::move(*vfs));
+        data_ = load_game_data(&*vfs_);
+        overlay_.emplace(host_, data_, &*vfs_, kWidth, kHeight);
+        EXPECT_TRUE(overlay_->take_start_messages().empty());
+        overlay_->create_menu(frames_->plugins(), *session_, "/nonexistent");
+    }
+    void TearDown() override {
+        overlay_.reset();
+        FrameRendererTest::TearDown();
+    }
+    bool menu_takes(const InputEvent& event) {
+        return overlay_->menu_takes_event(event, false, HudScreen{kWidth, kHeight, 1.0f});
+    }
+
+    std::optional<Vfs> vfs_;
+    GameData data_;
+    std::optional<DemoSession> session_;
+    std::optional<Overlay> overlay_;
+};
+
+TEST_F(OverlayTest, EscapeOpensTheMenuWhichThenTakesTheKeysButNotTheConsoles) {
+    EXPECT_FALSE(overlay_->open());
+    EXPECT_FALSE(menu_takes(key("UPARROW"))) << "no menu open: keys are the game's";
+    EXPECT_TRUE(menu_takes(key("ESCAPE")));
+    EXPECT_TRUE(overlay_->menu().active());
+    EXPECT_TRUE(overlay_->open());
+    EXPECT_TRUE(menu_takes(key("DOWNARROW")));
+    EXPECT_FALSE(menu_takes(key("`"))) << "the console's key reaches the console";
+    EXPECT_FALSE(menu_takes(key("DOWNARROW", false))) << "releases are never the menu's";
+}
+
+TEST_F(OverlayTest, EscapeClosesTheConsoleAndOverNothingOpensTheMenu) {
+    overlay_->console().set_open(true);
+    EXPECT_TRUE(overlay_->open());
+    EXPECT_TRUE(menu_takes(key("ESCAPE")));
+    EXPECT_FALSE(overlay_->console().is_open());
+    EXPECT_TRUE(overlay_->menu().active()) << "no session runs: the menu shows";
+    overlay_->menu().close();
+    overlay_->console().set_open(true);
+    EXPECT_TRUE(overlay_->menu_takes_event(key("ESCAPE"), true, HudScreen{kWidth, kHeight, 1}));
+    EXPECT_FALSE(overlay_->menu().active()) << "over a running session only the console closes";
+}
+
+TEST_F(OverlayTest, TheOpenMenuIsDrawnOverTheFrame) {
+    glViewport(0, 0, kWidth, kHeight);
+    glClearColor(0.5f, 0.5f, 0.5f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    overlay_->draw(0.0, HudScreen{kWidth, kHeight, 1.0f});
+    const std::vector<uint8_t> closed = read_screen(kWidth, kHeight);
+    overlay_->menu().open(MenuScreen::Main);
+    glClear(GL_COLOR_BUFFER_BIT);
+    overlay_->draw(0.0, HudScreen{kWidth, kHeight, 1.0f});
+    const std::vector<uint8_t> open = read_screen(kWidth, kHeight);
+    size_t changed = 0;
+    for (size_t i = 0; i < open.size(); i += 4) changed += open[i] != closed[i];
+    EXPECT_GT(changed, size_t(kWidth) * kHeight / 4) << "the menu darkens the screen and draws";
 }
 
 }  // namespace
