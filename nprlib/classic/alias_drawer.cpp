@@ -7,8 +7,10 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
 #include "classic/alias_pose_glsl.h"
+#include "classic/classic_pass.h"
 #include "gl/texture_upload.h"
 
 namespace nq::npr::classic {

@@ -14,7 +14,8 @@
 #include <cstdint>
 #include <string>
 
-#include "classic/frame_view.h"
+#include "abi/frame_view.h"
+#include "classic/classic_pass.h"
 #include "classic/model_registry.h"
 #include "classic/translated_skins.h"
 #include "gl/program.h"

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 
 namespace nq::npr::classic {
 namespace {
@@ -161,8 +161,9 @@ AliasMesh build_alias_mesh(const nqr_alias_model& model) {
         if (!alias_triangle_valid(model, triangle)) continue;
         for (int corner = 1; corner <= 3; ++corner) {
             const auto vertex = static_cast<uint32_t>(triangle[corner]);
-            mesh.indices.push_back(mesh_vertex(
-                model, vertex, alias_vertex_on_back_of_seam(model, triangle, corner), lookup, mesh));
+            mesh.indices.push_back(
+                mesh_vertex(model, vertex, alias_vertex_on_back_of_seam(model, triangle, corner),
+                            lookup, mesh));
         }
     }
     pack_poses(model, mesh);

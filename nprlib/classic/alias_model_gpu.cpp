@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <span>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "classic/alias_mesh.h"
 #include "gl/texture_upload.h"
 

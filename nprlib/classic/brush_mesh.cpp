@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "classic/lightmap_packer.h"
 
 namespace nq::npr::classic {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "classic/texture_animation.h"
 
 namespace nq::npr::classic {

@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "gl/texture_upload.h"
 
 namespace nq::npr::classic {

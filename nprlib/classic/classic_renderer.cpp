@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 
 namespace nq::npr::classic {
 

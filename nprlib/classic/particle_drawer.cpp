@@ -7,7 +7,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
+#include "classic/classic_pass.h"
 
 namespace nq::npr::classic {
 namespace {

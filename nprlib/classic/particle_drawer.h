@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <string>
 
-#include "classic/frame_view.h"
 #include "gl/program.h"
 #include "gl/stream_buffer.h"
 #include "nqr_renderer.h"

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "classic/frame_view.h"
+#include "abi/frame_view.h"
 #include "classic/model_registry.h"
 #include "gl/program.h"
 #include "nqr_renderer.h"

@@ -2,7 +2,7 @@
 
 #include <span>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "gl/texture_upload.h"
 
 namespace nq::npr::classic {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 
 namespace nq::npr::classic {
 namespace {

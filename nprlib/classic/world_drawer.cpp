@@ -8,7 +8,9 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
+#include "classic/classic_pass.h"
 #include "gl/texture_upload.h"
 
 namespace nq::npr::classic {

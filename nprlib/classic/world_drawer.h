@@ -11,9 +11,9 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "abi/frame_view.h"
 #include "classic/brush_model_gpu.h"
 #include "classic/brush_programs.h"
-#include "classic/frame_view.h"
 #include "classic/lightmap_builder.h"
 #include "classic/model_registry.h"
 #include "nqr_renderer.h"

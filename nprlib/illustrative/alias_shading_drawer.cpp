@@ -6,6 +6,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
 #include "classic/alias_pass_state.h"
 #include "classic/alias_pose_glsl.h"
 #include "gl/texture_upload.h"
@@ -162,7 +164,7 @@ void AliasShadingDrawer::reset() {
     settings_ = nullptr;
 }
 
-bool AliasShadingDrawer::begin(const classic::FrameView& view, const IllustrativeSettings& settings,
+bool AliasShadingDrawer::begin(const npr::FrameView& view, const IllustrativeSettings& settings,
                                GLuint default_warp) {
     if (!variants_[kShadingVariants - 1].program) return false;
     view_ = &view;
@@ -202,7 +204,7 @@ void AliasShadingDrawer::set_pass_uniforms(gl::Program& program) {
     glUniform1f(program.location("u_height_floor"), settings_->height_gradient_floor);
 }
 
-void AliasShadingDrawer::draw(const classic::FrameView& view, const nqr_entity& entity,
+void AliasShadingDrawer::draw(const npr::FrameView& view, const nqr_entity& entity,
                               const classic::AliasModelGpu& gpu, const IllustrativeModel& model,
                               const AliasShadingTextures& textures,
                               const MaterialParams& material) {
@@ -210,12 +212,12 @@ void AliasShadingDrawer::draw(const classic::FrameView& view, const nqr_entity& 
     const EntityShading shading = entity_shading(entity, *settings_);
     gl::Program& program =
         use_variant(shading_variant(*settings_, shading.lights.count, gpu.holey()));
-    const glm::mat4 model_matrix = classic::mat4_from(entity.model_matrix);
+    const glm::mat4 model_matrix = npr::mat4_from(entity.model_matrix);
     glUniformMatrix4fv(program.location("u_model"), 1, GL_FALSE, entity.model_matrix);
     const glm::mat3 to_world = glm::inverseTranspose(glm::mat3(model_matrix));
     glUniformMatrix3fv(program.location("u_normal_to_world"), 1, GL_FALSE,
                        glm::value_ptr(to_world));
-    const glm::mat3 to_view = classic::normal_to_view(view, model_matrix);
+    const glm::mat3 to_view = npr::normal_to_view(view, model_matrix);
     glUniformMatrix3fv(program.location("u_normal_to_view"), 1, GL_FALSE, glm::value_ptr(to_view));
     classic::set_alias_pose_uniforms(program, gpu, entity, kUnitPoses);
     glUniform1i(program.location("u_normal_slots"), static_cast<GLint>(model.normal_slots()));
@@ -226,7 +228,7 @@ void AliasShadingDrawer::draw(const classic::FrameView& view, const nqr_entity& 
     const float height_span = model.height_max() - model.height_min();
     glUniform3f(program.location("u_height_gradient"), settings_->height_gradient ? 1.0f : 0.0f,
                 model.height_min(), height_span > 0.0f ? 1.0f / height_span : 0.0f);
-    const float alpha = classic::entity_alpha(entity.alpha);
+    const float alpha = npr::entity_alpha(entity.alpha);
     glUniform1f(program.location("u_alpha"), alpha);
     glUniform1f(program.location("u_alpha_cutoff"), gpu.holey() ? kHoleyAlphaCutoff : 0.0f);
 

@@ -9,8 +9,8 @@
 #include <array>
 #include <string>
 
+#include "abi/frame_view.h"
 #include "classic/alias_model_gpu.h"
-#include "classic/frame_view.h"
 #include "gl/program.h"
 #include "illustrative/illustrative_glsl.h"
 #include "illustrative/illustrative_model.h"
@@ -36,9 +36,9 @@ class AliasShadingDrawer {
     // A pass over many entities (see technical's AliasFaceDrawer): begin sets the program,
     // per-pass uniforms and culling; draw per entity; end restores the classic state.
     // `default_warp`: the ramp for entities whose textures name none.
-    bool begin(const classic::FrameView& view, const IllustrativeSettings& settings,
+    bool begin(const npr::FrameView& view, const IllustrativeSettings& settings,
                GLuint default_warp);
-    void draw(const classic::FrameView& view, const nqr_entity& entity,
+    void draw(const npr::FrameView& view, const nqr_entity& entity,
               const classic::AliasModelGpu& gpu, const IllustrativeModel& model,
               const AliasShadingTextures& textures, const MaterialParams& material);
     void end();
@@ -58,7 +58,7 @@ class AliasShadingDrawer {
     std::array<VariantProgram, kShadingVariants> variants_;
     gl::Program* current_ = nullptr;
     gl::Texture black_, neutral_masks_;
-    const classic::FrameView* view_ = nullptr;        // this pass's
+    const npr::FrameView* view_ = nullptr;            // this pass's
     const IllustrativeSettings* settings_ = nullptr;  // this pass's
     unsigned pass_ = 0;
     GLuint default_warp_ = 0;

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "illustrative/skin_masks.h"
 
 namespace nq::npr::illustrative {
@@ -142,11 +142,11 @@ ShaderLights shader_lights(const nqr_entity& entity, int max_lights) {
     const int limit = std::clamp(max_lights, 0, int(NQR_MAX_ENTITY_LIGHTS));
     if ((entity.flags & NQR_ENTITY_FULLBRIGHT) != 0) return out;
     const nqr_entity_light& light = entity.light;
-    if (classic::light_has_sources(light) && light.num_lights > 0 &&
+    if (npr::light_has_sources(light) && light.num_lights > 0 &&
         light.lights[0].size >= sizeof(nqr_light_source)) {
         const int listed = std::min<int>(static_cast<int>(light.num_lights), limit);
         for (int i = 0; i < listed; ++i) {
-            const nqr_light_source& source = classic::abi_element(light.lights, uint32_t(i));
+            const nqr_light_source& source = npr::abi_element(light.lights, uint32_t(i));
             out.position[i] = vec3_of(source.position);
             out.color[i] = glm::max(vec3_of(source.color), glm::vec3(0.0f));
         }

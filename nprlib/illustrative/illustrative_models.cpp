@@ -4,7 +4,7 @@
 
 #include <span>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "classic/alias_mesh.h"
 #include "classic/player_colors.h"
 #include "gl/texture_upload.h"
@@ -89,23 +89,22 @@ void IllustrativeModels::add(const nqr_model& model, const ModelLoadOptions& opt
     IllustrativeModelData data;
     data.mesh = IllustrativeModel::create(tracker_, alias, normals_for(alias, options), error);
     if (!data.mesh) {
-        log_(NQR_LOG_WARNING, std::string("illustrative: ") + (model.name ? model.name : "?") +
-                                  ": " + error);
+        log_(NQR_LOG_WARNING,
+             std::string("illustrative: ") + (model.name ? model.name : "?") + ": " + error);
         return;
     }
     const PaletteMasks palette_masks = derive_palette_masks(palette_);
     const size_t pixels = static_cast<size_t>(alias.skin_width) * alias.skin_height;
     data.masks.resize(alias.num_skins);
     for (uint32_t s = 0; s < alias.num_skins; ++s) {
-        const nqr_alias_skin& skin = classic::abi_element(alias.skins, s);
+        const nqr_alias_skin& skin = npr::abi_element(alias.skins, s);
         for (uint32_t i = 0; i < skin.num_images; ++i) {
             if (!skin.images || !skin.images[i]) {
                 data.masks[s].emplace_back();  // drawn with neutral masks
                 continue;
             }
-            const std::vector<uint8_t> rgba =
-                skin_mask_texels({skin.images[i], pixels}, alias.skin_width, alias.skin_height,
-                                 palette_masks);
+            const std::vector<uint8_t> rgba = skin_mask_texels(
+                {skin.images[i], pixels}, alias.skin_width, alias.skin_height, palette_masks);
             data.masks[s].push_back(gl::create_rgba8_texture(
                 tracker_, alias.skin_width, alias.skin_height, rgba, gl::kNearestRepeat));
         }
@@ -129,7 +128,8 @@ void IllustrativeModels::load_material(const std::string& model_name,
     }
     out.material = parsed.material;
     if (!out.material.light_warp_texture) return;
-    const WarpRampResult ramp = find_warp_ramp(*out.material.light_warp_texture, read_file_, palette_);
+    const WarpRampResult ramp =
+        find_warp_ramp(*out.material.light_warp_texture, read_file_, palette_);
     if (!ramp.ramp) {
         log_(NQR_LOG_WARNING, "illustrative: " + path + ": $lightwarptexture: " + ramp.error +
                                   "; using the style's ramp");
@@ -147,8 +147,7 @@ const IllustrativeModelData* IllustrativeModels::find(nqr_model_id id) const {
     return it == models_.end() ? nullptr : &it->second;
 }
 
-MaterialParams apply_overrides(const MaterialParams& defaults,
-                               const MaterialOverrides& overrides) {
+MaterialParams apply_overrides(const MaterialParams& defaults, const MaterialOverrides& overrides) {
     MaterialParams out = defaults;
     if (overrides.phong_exponent) {
         out.phong_exponent = *overrides.phong_exponent;

@@ -2,15 +2,16 @@
 
 #include <epoxy/gl.h>
 
-#include "classic/abi_access.h"
-#include "classic/frame_view.h"
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
+#include "classic/classic_pass.h"
 #include "illustrative/texture_abstraction.h"
 
 namespace nq::npr::illustrative {
 
-using classic::entity_in_view;
-using classic::frame_readable;
-using classic::has_known_prefix;
+using npr::entity_in_view;
+using npr::frame_readable;
+using npr::has_known_prefix;
 
 namespace {
 
@@ -50,8 +51,7 @@ bool IllustrativeRenderer::init(const nqr_engine* engine, std::string* error) {
         abstract_world_texture(width, height, rgba);
     });
     models_.init(
-        &tracker_, classic_.palette(),
-        [this](const std::string& path) { return read_file(path); },
+        &tracker_, classic_.palette(), [this](const std::string& path) { return read_file(path); },
         [this](int level, const std::string& text) { log(level, text); });
     if (!drawer_.init(&tracker_, message)) return fail(message, error);
     items_.reserve(256);
@@ -133,9 +133,9 @@ bool IllustrativeRenderer::gather(const nqr_frame& frame, const nqr_entity* enti
 }
 
 void IllustrativeRenderer::draw_alias_entities(const nqr_frame* frame) {
-    classic::FrameView view;
+    npr::FrameView view;
     if (!initialised_ || !frame_readable(frame) || !frame->alias_entities ||
-        !classic::read_frame_view(frame, view)) {
+        !npr::read_frame_view(frame, view)) {
         return;
     }
     items_.clear();
@@ -153,7 +153,7 @@ void IllustrativeRenderer::draw_alias_entities(const nqr_frame* frame) {
     classic::end_classic_pass();
 }
 
-void IllustrativeRenderer::draw_pass(const nqr_frame& frame, const classic::FrameView& view,
+void IllustrativeRenderer::draw_pass(const nqr_frame& frame, const npr::FrameView& view,
                                      AliasPass pass) {
     bool begun = false;
     for (const AliasItem& item : items_) {

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "abi/frame_view.h"
+#include "classic/classic_pass.h"
 #include "classic/classic_renderer.h"
 #include "gl/object_tracker.h"
 #include "illustrative/alias_shading_drawer.h"
@@ -61,7 +63,7 @@ class IllustrativeRenderer {
     void load_warp_ramp();
     void abstract_world_texture(int width, int height, std::vector<uint8_t>& rgba) const;
     bool gather(const nqr_frame& frame, const nqr_entity* entity, AliasItem& out);
-    void draw_pass(const nqr_frame& frame, const classic::FrameView& view, AliasPass pass);
+    void draw_pass(const nqr_frame& frame, const npr::FrameView& view, AliasPass pass);
 
     gl::ObjectTracker tracker_;  // first: outlives every GL object below
     const nqr_engine* engine_ = nullptr;

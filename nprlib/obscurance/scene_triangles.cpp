@@ -5,7 +5,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 
 namespace nq::npr::obscurance {
 namespace {
@@ -24,7 +24,7 @@ void add_brush(const nqr_model& model, const glm::mat4& model_to_view, Obscuranc
     if (!brush || !brush->surfaces) return;
     const uint32_t end = std::min(model.first_surface + model.num_surfaces, brush->num_surfaces);
     for (uint32_t s = model.first_surface; s < end; ++s) {
-        const nqr_surface& surface = classic::abi_element(brush->surfaces, s);
+        const nqr_surface& surface = npr::abi_element(brush->surfaces, s);
         if (surface.num_vertices < 3 ||
             surface.first_vertex + uint64_t(surface.num_vertices) > brush->num_vertices) {
             continue;
@@ -79,7 +79,7 @@ ObscuranceScene collect_scene(const nqr_frame& frame, std::span<const nqr_model*
     if (const nqr_model* world = find_model(models, frame.world)) add_brush(*world, view, scene);
     for (uint32_t i = 0; i < frame.num_brush_entities; ++i) {
         const nqr_entity* e = frame.brush_entities[i];
-        if (!classic::entity_readable(e)) continue;
+        if (!npr::entity_readable(e)) continue;
         const nqr_model* m = find_model(models, e->model);
         if (m && m->kind == NQR_MODEL_BRUSH) {
             add_brush(*m, view * glm::make_mat4(e->model_matrix), scene);
@@ -87,7 +87,7 @@ ObscuranceScene collect_scene(const nqr_frame& frame, std::span<const nqr_model*
     }
     for (uint32_t i = 0; i < frame.num_alias_entities; ++i) {
         const nqr_entity* e = frame.alias_entities[i];
-        if (!classic::entity_readable(e) || (e->flags & NQR_ENTITY_VIEWMODEL) != 0) continue;
+        if (!npr::entity_readable(e) || (e->flags & NQR_ENTITY_VIEWMODEL) != 0) continue;
         const nqr_model* m = find_model(models, e->model);
         if (m && m->kind == NQR_MODEL_ALIAS && m->alias) {
             add_alias(*e, *m->alias, view * glm::make_mat4(e->model_matrix), scene);

@@ -10,7 +10,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
 #include "technical/alias_pose.h"
 #include "technical/shading_model.h"
 
@@ -64,16 +65,15 @@ ChainTolerance chain_tolerance(const EdgeFrameUniforms& frame, const EdgeSetting
 // Shades one entity's edge ends: view position, distance and technical tone per MDL vertex.
 class AliasEdgeDrawer::EndShader {
   public:
-    EndShader(const classic::FrameView& view, const ShadingSettings& shading,
-              const nqr_entity& entity, const classic::AliasModelGpu& faces, const glm::vec3* pose,
-              const SkinSample& skin)
+    EndShader(const npr::FrameView& view, const ShadingSettings& shading, const nqr_entity& entity,
+              const classic::AliasModelGpu& faces, const glm::vec3* pose, const SkinSample& skin)
         : shading_(shading),
           skin_(skin),
           pose_(pose),
           st_(faces.model().st),
           normals_(faces.model(), faces.pose_texels(), entity),
           light_(tone_light(entity)) {
-        const glm::mat4 model = classic::mat4_from(entity.model_matrix);
+        const glm::mat4 model = npr::mat4_from(entity.model_matrix);
         model_view_ = view.view * model;
         normal_to_world_ = glm::inverseTranspose(glm::mat3(model));
     }
@@ -157,7 +157,7 @@ void AliasEdgeDrawer::clear() {
     uploaded_ = false;
 }
 
-void AliasEdgeDrawer::begin_frame(const classic::FrameView& view, const ShadingSettings& shading,
+void AliasEdgeDrawer::begin_frame(const npr::FrameView& view, const ShadingSettings& shading,
                                   const ChainTolerance& chains) {
     clear();
     view_ = view;
@@ -282,11 +282,11 @@ void AliasEdgeDrawer::end() {
     glUseProgram(0);
 }
 
-void AliasEdgeDrawer::draw_entity(const classic::FrameView& view,
+void AliasEdgeDrawer::draw_entity(const npr::FrameView& view,
                                   const EdgeFrameUniforms& frame_uniforms, const nqr_entity& entity,
                                   const classic::AliasModelGpu& faces, const AliasEdgeMesh& edges,
                                   const SkinSample& skin, const TechnicalSettings& settings) {
-    if (!quads_ || !classic::has_known_prefix(&entity)) return;
+    if (!quads_ || !npr::has_known_prefix(&entity)) return;
     pose_.resize(edges.vertex_count());
     blend_alias_pose(faces.model(), entity, pose_.data());
     begin_frame(view, settings.shading, chain_tolerance(frame_uniforms, settings.edges));

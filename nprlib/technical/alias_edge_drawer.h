@@ -19,8 +19,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "abi/frame_view.h"
 #include "classic/alias_model_gpu.h"
-#include "classic/frame_view.h"
 #include "gl/handles.h"
 #include "gl/program.h"
 #include "gl/stream_buffer.h"
@@ -53,7 +53,7 @@ class AliasEdgeDrawer {
     // seen from entity.eye_model, shades their ends (normals from `faces`' pose texels, k_d from
     // `skin`) and appends their quads; upload sends the quads (after the last add_entity,
     // before drawing).
-    void begin_frame(const classic::FrameView& view, const ShadingSettings& shading,
+    void begin_frame(const npr::FrameView& view, const ShadingSettings& shading,
                      const ChainTolerance& chains);
     EdgeSpan add_entity(const nqr_entity& entity, const classic::AliasModelGpu& faces,
                         const AliasEdgeMesh& mesh, const glm::vec3* pose, const SkinSample& skin,
@@ -68,7 +68,7 @@ class AliasEdgeDrawer {
     void end();
 
     // All of the above for one entity (its pose blended here).
-    void draw_entity(const classic::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
+    void draw_entity(const npr::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
                      const nqr_entity& entity, const classic::AliasModelGpu& faces,
                      const AliasEdgeMesh& edges, const SkinSample& skin,
                      const TechnicalSettings& settings);
@@ -96,7 +96,7 @@ class AliasEdgeDrawer {
     gl::Buffer quad_indices_;  // 0 1 2 0 2 3 per quad, for every quad a push can hold
     gl::VertexArray quads_array_;
     size_t max_edges_ = 0;
-    classic::FrameView view_;
+    npr::FrameView view_;
     ShadingSettings shading_;
     ChainTolerance chain_tolerance_;
     EdgeChains chains_;

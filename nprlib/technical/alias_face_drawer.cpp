@@ -6,7 +6,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
 #include "classic/alias_pass_state.h"
 #include "classic/alias_pose_glsl.h"
 #include "gl/texture_upload.h"
@@ -109,7 +110,7 @@ void AliasFaceDrawer::reset() {
 void AliasFaceDrawer::set_light_direction(const nqr_entity& entity) {
     // An engine too old to sample light, or no dominant light: light from straight above.
     glm::vec3 direction(0.0f, 0.0f, 1.0f);
-    if (classic::light_readable(entity.light)) {
+    if (npr::light_readable(entity.light)) {
         const glm::vec3 sampled = glm::make_vec3(entity.light.direction);
         const float length = glm::length(sampled);
         if (length > 1e-6f) direction = sampled / length;
@@ -117,7 +118,7 @@ void AliasFaceDrawer::set_light_direction(const nqr_entity& entity) {
     glUniform3fv(program_->location("u_light_direction"), 1, glm::value_ptr(direction));
 }
 
-bool AliasFaceDrawer::begin(const classic::FrameView& view, const ShadingSettings& settings) {
+bool AliasFaceDrawer::begin(const npr::FrameView& view, const ShadingSettings& settings) {
     std::string error;
     program_ = build_variant(shading_variant(settings), error);
     if (!program_) return false;  // the default variant compiled: a driver failure
@@ -130,23 +131,23 @@ bool AliasFaceDrawer::begin(const classic::FrameView& view, const ShadingSetting
     return true;
 }
 
-void AliasFaceDrawer::draw(const classic::FrameView& view, const nqr_entity& entity,
+void AliasFaceDrawer::draw(const npr::FrameView& view, const nqr_entity& entity,
                            const classic::AliasModelGpu& model, GLuint skin_texture,
                            GLuint fullbright_texture, const glm::vec3& kd_average) {
     if (!program_ || skin_texture == 0) return;
-    const glm::mat4 model_matrix = classic::mat4_from(entity.model_matrix);
+    const glm::mat4 model_matrix = npr::mat4_from(entity.model_matrix);
     glUniformMatrix4fv(program_->location("u_model"), 1, GL_FALSE, entity.model_matrix);
     const glm::mat3 to_world = glm::inverseTranspose(glm::mat3(model_matrix));
     glUniformMatrix3fv(program_->location("u_normal_to_world"), 1, GL_FALSE,
                        glm::value_ptr(to_world));
-    const glm::mat3 to_view = classic::normal_to_view(view, model_matrix);
+    const glm::mat3 to_view = npr::normal_to_view(view, model_matrix);
     glUniformMatrix3fv(program_->location("u_normal_to_view"), 1, GL_FALSE,
                        glm::value_ptr(to_view));
     classic::set_alias_pose_uniforms(*program_, model, entity, kUnitPoses);
     set_entity_light_uniforms(*program_, entity);
     set_light_direction(entity);
     glUniform3fv(program_->location("u_kd_average"), 1, glm::value_ptr(kd_average));
-    const float alpha = classic::entity_alpha(entity.alpha);
+    const float alpha = npr::entity_alpha(entity.alpha);
     glUniform1f(program_->location("u_alpha"), alpha);
     glUniform1f(program_->location("u_alpha_cutoff"), model.holey() ? kHoleyAlphaCutoff : 0.0f);
 
@@ -163,7 +164,7 @@ void AliasFaceDrawer::end() {
     classic::end_alias_face_pass();
 }
 
-void AliasFaceDrawer::draw_entity(const classic::FrameView& view, const nqr_entity& entity,
+void AliasFaceDrawer::draw_entity(const npr::FrameView& view, const nqr_entity& entity,
                                   const classic::AliasModelGpu& model, GLuint skin_texture,
                                   GLuint fullbright_texture, const glm::vec3& kd_average,
                                   const ShadingSettings& settings) {

@@ -13,8 +13,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "abi/frame_view.h"
 #include "classic/alias_model_gpu.h"
-#include "classic/frame_view.h"
 #include "gl/program.h"
 #include "nqr_renderer.h"
 #include "technical/shading_glsl.h"
@@ -33,14 +33,14 @@ class AliasFaceDrawer {
     // Metal bands run across the model-space height (z). kd_average: SkinSample::average of
     // the skin drawn.
     // begin is false (and draw does nothing) when the settings' shader variant cannot be built.
-    bool begin(const classic::FrameView& view, const ShadingSettings& settings);
-    void draw(const classic::FrameView& view, const nqr_entity& entity,
+    bool begin(const npr::FrameView& view, const ShadingSettings& settings);
+    void draw(const npr::FrameView& view, const nqr_entity& entity,
               const classic::AliasModelGpu& model, GLuint skin_texture, GLuint fullbright_texture,
               const glm::vec3& kd_average);
     void end();
 
     // One entity: begin, draw, end.
-    void draw_entity(const classic::FrameView& view, const nqr_entity& entity,
+    void draw_entity(const npr::FrameView& view, const nqr_entity& entity,
                      const classic::AliasModelGpu& model, GLuint skin_texture,
                      GLuint fullbright_texture, const glm::vec3& kd_average,
                      const ShadingSettings& settings);

@@ -1,4 +1,6 @@
 #include "technical/brush_edge_drawer.h"
+#include "abi/frame_view.h"
+#include "classic/classic_pass.h"
 
 #include <epoxy/gl.h>
 
@@ -106,7 +108,7 @@ void BrushEdgeDrawer::reset() {
     program_.reset();
 }
 
-void BrushEdgeDrawer::begin(const classic::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
+void BrushEdgeDrawer::begin(const npr::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
                             const Placement& placement, const BrushEdgeMesh& mesh,
                             const EdgeSettings& settings) {
     classic::begin_classic_pass();
@@ -140,7 +142,7 @@ void BrushEdgeDrawer::end() {
     classic::end_classic_pass();
 }
 
-void BrushEdgeDrawer::draw_world(const classic::FrameView& view,
+void BrushEdgeDrawer::draw_world(const npr::FrameView& view,
                                  const EdgeFrameUniforms& frame_uniforms, const nqr_frame& frame,
                                  const BrushEdgeMesh& mesh, const EdgeSettings& settings) {
     if (!program_ || !wants_edges(settings) || mesh.num_edges() == 0) return;
@@ -159,7 +161,7 @@ void BrushEdgeDrawer::draw_world(const classic::FrameView& view,
     end();
 }
 
-void BrushEdgeDrawer::draw_entity(const classic::FrameView& view,
+void BrushEdgeDrawer::draw_entity(const npr::FrameView& view,
                                   const EdgeFrameUniforms& frame_uniforms, const nqr_entity& entity,
                                   const BrushEdgeMesh& mesh, uint32_t first_surface,
                                   uint32_t num_surfaces, const EdgeSettings& settings) {
@@ -167,8 +169,8 @@ void BrushEdgeDrawer::draw_entity(const classic::FrameView& view,
     const uint32_t first_edge = mesh.table().range_begin(first_surface);
     const uint32_t end_edge = mesh.table().range_end(first_surface, num_surfaces);
     if (end_edge <= first_edge) return;
-    const Placement placement{classic::mat4_from(entity.model_matrix),
-                              glm::make_vec3(entity.eye_model), true};
+    const Placement placement{npr::mat4_from(entity.model_matrix), glm::make_vec3(entity.eye_model),
+                              true};
     begin(view, frame_uniforms, placement, mesh, settings);
     glDrawArrays(GL_LINES, static_cast<GLint>(first_edge * 2),
                  static_cast<GLsizei>((end_edge - first_edge) * 2));

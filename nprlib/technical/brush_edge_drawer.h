@@ -19,7 +19,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "classic/frame_view.h"
+#include "abi/frame_view.h"
 #include "gl/program.h"
 #include "gl/stream_buffer.h"
 #include "nqr_renderer.h"
@@ -36,13 +36,13 @@ class BrushEdgeDrawer {
 
     // Edges of the world's visible surfaces (frame.visible_surfaces, indices into the brush's
     // surfaces; when the list is NULL, every shared edge of the mesh).
-    void draw_world(const classic::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
+    void draw_world(const npr::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
                     const nqr_frame& frame, const BrushEdgeMesh& mesh,
                     const EdgeSettings& settings);
 
     // All edges of surfaces [first_surface, first_surface + num_surfaces) of one brush entity
     // (placed by entity.model_matrix; facing tested from entity.eye_model, in model space).
-    void draw_entity(const classic::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
+    void draw_entity(const npr::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
                      const nqr_entity& entity, const BrushEdgeMesh& mesh, uint32_t first_surface,
                      uint32_t num_surfaces, const EdgeSettings& settings);
 
@@ -53,7 +53,7 @@ class BrushEdgeDrawer {
         bool boundaries = false;
     };
 
-    void begin(const classic::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
+    void begin(const npr::FrameView& view, const EdgeFrameUniforms& frame_uniforms,
                const Placement& placement, const BrushEdgeMesh& mesh, const EdgeSettings& settings);
     void draw_indexed(std::span<const uint32_t> line_indices);
     void end();

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <cstddef>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 
 namespace nq::npr::technical {
 namespace {
 
-using classic::abi_element;
+using npr::abi_element;
 
 constexpr glm::vec3 kNoTextureColor{0.5f};
 

@@ -7,14 +7,14 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "technical/brush_edge_tjunctions.h"
 #include "technical/technical_settings.h"
 
 namespace nq::npr::technical {
 namespace {
 
-using classic::abi_element;
+using npr::abi_element;
 
 struct HalfEdge {
     uint32_t surface;
@@ -230,8 +230,8 @@ float default_crease_angle_degrees() {
 BrushEdgeTable BrushEdgeTable::build(const nqr_brush_model& brush, std::string& error) {
     BrushEdgeTable table;
     table.index_by_surface(0);
-    const bool arrays_ok = (brush.num_surfaces == 0 || classic::has_known_prefix(brush.surfaces)) &&
-                           (brush.num_textures == 0 || classic::has_known_prefix(brush.textures));
+    const bool arrays_ok = (brush.num_surfaces == 0 || npr::has_known_prefix(brush.surfaces)) &&
+                           (brush.num_textures == 0 || npr::has_known_prefix(brush.textures));
     if (!arrays_ok || (brush.num_vertices > 0 && (!brush.positions || !brush.vertex_ids))) {
         error = "brush model without usable surfaces, positions or vertex ids";
         return table;

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "technical/shading_glsl.h"
 
 namespace nq::npr::technical {
@@ -32,7 +32,7 @@ ToneLight tone_light(const nqr_entity& entity) {
     ToneLight out;
     out.object_color = object_id_color(entity.number);
     const nqr_entity_light& light = entity.light;
-    if (!classic::light_readable(light)) return out;
+    if (!npr::light_readable(light)) return out;
     const glm::vec3 direction = glm::make_vec3(light.direction);
     const float length = glm::length(direction);
     if (length > 1e-6f) out.direction = direction / length;

@@ -8,7 +8,8 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
 
 namespace nq::npr::technical {
 namespace {
@@ -111,11 +112,11 @@ size_t ShadowDrawer::triangles_in_batch() const {
     return n;
 }
 
-void ShadowDrawer::add_entity(const classic::FrameView& view, const nqr_entity& entity,
+void ShadowDrawer::add_entity(const npr::FrameView& view, const nqr_entity& entity,
                               const AliasEdgeMesh& mesh, const glm::vec3* pose,
                               const ShadowPasses& passes) {
-    if (!pose || passes.count <= 0 || !classic::has_known_prefix(&entity)) return;
-    const glm::mat4 model = classic::mat4_from(entity.model_matrix);
+    if (!pose || passes.count <= 0 || !npr::has_known_prefix(&entity)) return;
+    const glm::mat4 model = npr::mat4_from(entity.model_matrix);
     // Facing in model space: n_world . l = n_model . (M^-1 l) for the model's linear part.
     const glm::vec3 light = glm::inverse(glm::mat3(model)) * passes.light;
     lit_.clear();

@@ -23,7 +23,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "classic/frame_view.h"
+#include "abi/frame_view.h"
 #include "gl/handles.h"
 #include "gl/program.h"
 #include "gl/stream_buffer.h"
@@ -46,8 +46,8 @@ class ShadowDrawer {
     // entity.model_matrix, each pass's world_to_plane and view.view_projection, at each pass's
     // alpha. Only triangles facing passes.light are kept: on a closed model the others project
     // inside them.
-    void add_entity(const classic::FrameView& view, const nqr_entity& entity,
-                    const AliasEdgeMesh& mesh, const glm::vec3* pose, const ShadowPasses& passes);
+    void add_entity(const npr::FrameView& view, const nqr_entity& entity, const AliasEdgeMesh& mesh,
+                    const glm::vec3* pose, const ShadowPasses& passes);
 
     // Draws what was added, in settings.color. Starts from and restores the classic drawers'
     // state, stencil test off.

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "classic/alias_model_gpu.h"
 #include "gl/palette_image.h"
 
@@ -47,9 +47,9 @@ glm::vec3 SkinSample::kd(int32_t s, int32_t t, float blend) const {
 
 void SkinTones::build(const nqr_alias_model& model) {
     images_.clear();
-    if (!classic::has_known_prefix(model.skins)) return;
+    if (!npr::has_known_prefix(model.skins)) return;
     for (uint32_t s = 0; s < model.num_skins; ++s) {
-        const nqr_alias_skin& skin = classic::abi_element(model.skins, s);
+        const nqr_alias_skin& skin = npr::abi_element(model.skins, s);
         for (uint32_t i = 0; skin.images && i < skin.num_images; ++i) {
             if (skin.images[i]) {
                 images_.push_back({skin.images[i], count_palette_indices(model, skin.images[i])});

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <span>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 #include "gl/palette_image.h"
 
 namespace nq::npr::technical {
 
-using classic::has_known_prefix;
+using npr::has_known_prefix;
 
 void TechnicalModels::init(gl::ObjectTracker* tracker, const uint8_t* palette_rgb, Logger log) {
     clear();
@@ -28,7 +28,7 @@ void TechnicalModels::add(const nqr_model& model) {
 
 float fullbright_share(const nqr_alias_model& model) {
     if (model.num_skins == 0 || !has_known_prefix(model.skins)) return 0.0f;
-    const nqr_alias_skin& skin = classic::abi_element(model.skins, 0);
+    const nqr_alias_skin& skin = npr::abi_element(model.skins, 0);
     if (skin.num_images == 0 || !skin.images || !skin.images[0]) return 0.0f;
     const size_t pixels =
         size_t(std::max(model.skin_width, 0)) * size_t(std::max(model.skin_height, 0));

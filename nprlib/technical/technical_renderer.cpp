@@ -7,16 +7,17 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
-#include "classic/frame_view.h"
+#include "abi/abi_access.h"
+#include "abi/frame_view.h"
+#include "classic/classic_pass.h"
 #include "technical/alias_pose.h"
 #include "technical/planar_shadow.h"
 
 namespace nq::npr::technical {
 
-using classic::entity_in_view;
-using classic::frame_readable;
-using classic::has_known_prefix;
+using npr::entity_in_view;
+using npr::frame_readable;
+using npr::has_known_prefix;
 
 namespace {
 
@@ -26,7 +27,7 @@ bool wants_alias_edges(const EdgeSettings& settings) {
 
 EdgeFrameUniforms edge_frame_uniforms(const nqr_frame& frame) {
     EdgeFrameUniforms out;
-    out.projection = classic::mat4_from(frame.camera.projection);
+    out.projection = npr::mat4_from(frame.camera.projection);
     out.viewport = {static_cast<float>(frame.camera.viewport[2]),
                     static_cast<float>(frame.camera.viewport[3])};
     out.z_near = frame.camera.z_near;
@@ -100,8 +101,8 @@ void TechnicalRenderer::draw_world(const nqr_frame* frame) {
     classic_.draw_world(frame);
     if (!initialised_ || !frame_readable(frame) || !settings.edges.world_edges) return;
     const TechnicalModel* world = models_.find(frame->world);
-    classic::FrameView view;
-    if (!world || !world->brush_edges || !classic::read_frame_view(frame, view)) return;
+    npr::FrameView view;
+    if (!world || !world->brush_edges || !npr::read_frame_view(frame, view)) return;
     pass_begin("edges");
     classic::begin_classic_pass();
     brush_edges_.draw_world(view, edge_frame_uniforms(*frame), *frame, *world->brush_edges,
@@ -113,9 +114,9 @@ void TechnicalRenderer::draw_world(const nqr_frame* frame) {
 void TechnicalRenderer::draw_brush_entities(const nqr_frame* frame) {
     classic_.draw_brush_entities(frame);
     if (!initialised_ || !frame_readable(frame) || !settings.edges.world_edges) return;
-    classic::FrameView view;
+    npr::FrameView view;
     if (!frame->brush_entities || frame->num_brush_entities == 0 ||
-        !classic::read_frame_view(frame, view)) {
+        !npr::read_frame_view(frame, view)) {
         return;
     }
     pass_begin("edges");
@@ -126,7 +127,7 @@ void TechnicalRenderer::draw_brush_entities(const nqr_frame* frame) {
 }
 
 void TechnicalRenderer::draw_brush_entity_edges(const nqr_frame& frame,
-                                                const classic::FrameView& view) {
+                                                const npr::FrameView& view) {
     const EdgeFrameUniforms uniforms = edge_frame_uniforms(frame);
     for (uint32_t i = 0; i < frame.num_brush_entities; ++i) {
         const nqr_entity* entity = frame.brush_entities[i];
@@ -141,7 +142,7 @@ void TechnicalRenderer::draw_brush_entity_edges(const nqr_frame& frame,
 // ------------------------------------------------------------------ alias models
 
 bool TechnicalRenderer::find_alias(const nqr_entity* entity, AliasItem& out) const {
-    if (!classic::entity_readable(entity)) return false;
+    if (!npr::entity_readable(entity)) return false;
     const classic::RegisteredModel* registered = classic_.models().find(entity->model);
     if (!registered || !registered->alias) return false;
     out.entity = entity;
@@ -157,9 +158,9 @@ bool TechnicalRenderer::find_alias(const nqr_entity* entity, AliasItem& out) con
 }
 
 void TechnicalRenderer::draw_alias_entities(const nqr_frame* frame) {
-    classic::FrameView view;
+    npr::FrameView view;
     if (!initialised_ || !frame_readable(frame) || !frame->alias_entities ||
-        !classic::read_frame_view(frame, view)) {
+        !npr::read_frame_view(frame, view)) {
         return;
     }
     gather_alias_entities(*frame, view);
@@ -189,8 +190,7 @@ void TechnicalRenderer::draw_alias_entities(const nqr_frame* frame) {
 
 // One CPU walk over the frame's alias entities: each pose is blended once, then flattened into
 // the shadow batch and searched for edges; the entities on screen are listed for the passes.
-void TechnicalRenderer::gather_alias_entities(const nqr_frame& frame,
-                                              const classic::FrameView& view) {
+void TechnicalRenderer::gather_alias_entities(const nqr_frame& frame, const npr::FrameView& view) {
     items_.clear();
     shadows_.begin_frame();
     alias_edges_.begin_frame(view, settings.shading,
@@ -244,7 +244,7 @@ float TechnicalRenderer::shadow_distance_fade(float distance) const {
 // The entity's shadow projections (count 0: none), faded with distance; casters off screen
 // keep theirs only when the shadow can be seen.
 ShadowPasses TechnicalRenderer::shadow_passes(const AliasItem& item,
-                                              const classic::FrameView& view) const {
+                                              const npr::FrameView& view) const {
     ShadowPasses none;
     if (!settings.shadows.enabled || !item.edges || !item.casts_shadow ||
         classic::alias_pass_of(*item.entity) != AliasPass::opaque) {
@@ -258,14 +258,14 @@ ShadowPasses TechnicalRenderer::shadow_passes(const AliasItem& item,
     ShadowPasses passes = build_shadow_passes(plane, glm::make_vec3(item.entity->light.direction),
                                               origin, settings.shadows, item.radius);
     if (!entity_in_view(item.entity) &&
-        classic::sphere_outside_view(view, passes.bounds_centre, passes.bounds_radius)) {
+        npr::sphere_outside_view(view, passes.bounds_centre, passes.bounds_radius)) {
         return none;
     }
     for (int p = 0; p < passes.count; ++p) passes.pass[p].alpha *= fade;
     return passes;
 }
 
-void TechnicalRenderer::draw_faces(const classic::FrameView& view, AliasPass pass) {
+void TechnicalRenderer::draw_faces(const npr::FrameView& view, AliasPass pass) {
     bool begun = false;
     for (const AliasItem& item : items_) {
         if (classic::alias_pass_of(*item.entity) != pass) continue;
@@ -278,8 +278,7 @@ void TechnicalRenderer::draw_faces(const classic::FrameView& view, AliasPass pas
 }
 
 // Past the blend threshold an edge has taken the model's colour: drawing it changes nothing.
-bool TechnicalRenderer::edges_fully_faded(const AliasItem& item,
-                                          const classic::FrameView& view) const {
+bool TechnicalRenderer::edges_fully_faded(const AliasItem& item, const npr::FrameView& view) const {
     if (!settings.edges.distance_fade) return false;
     const float distance = glm::distance(glm::make_vec3(item.entity->origin), view.eye);
     return distance - item.radius > settings.edges.fade_distance;

@@ -13,6 +13,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "abi/frame_view.h"
+#include "classic/classic_pass.h"
 #include "classic/classic_renderer.h"
 #include "gl/object_tracker.h"
 #include "nqr_renderer.h"
@@ -72,14 +74,14 @@ class TechnicalRenderer {
     void pass_begin(const char* name) const;
     void pass_end() const;
     bool find_alias(const nqr_entity* entity, AliasItem& out) const;
-    void gather_alias_entities(const nqr_frame& frame, const classic::FrameView& view);
+    void gather_alias_entities(const nqr_frame& frame, const npr::FrameView& view);
     SkinSample skin_sample(const AliasItem& item) const;
-    ShadowPasses shadow_passes(const AliasItem& item, const classic::FrameView& view) const;
-    void draw_faces(const classic::FrameView& view, AliasPass pass);
+    ShadowPasses shadow_passes(const AliasItem& item, const npr::FrameView& view) const;
+    void draw_faces(const npr::FrameView& view, AliasPass pass);
     void draw_alias_edges(const EdgeFrameUniforms& uniforms, AliasPass pass);
-    bool edges_fully_faded(const AliasItem& item, const classic::FrameView& view) const;
+    bool edges_fully_faded(const AliasItem& item, const npr::FrameView& view) const;
     float shadow_distance_fade(float distance) const;
-    void draw_brush_entity_edges(const nqr_frame& frame, const classic::FrameView& view);
+    void draw_brush_entity_edges(const nqr_frame& frame, const npr::FrameView& view);
 
     gl::ObjectTracker tracker_;  // first: outlives every GL object below
     const nqr_engine* engine_ = nullptr;

@@ -9,8 +9,9 @@
 #include <memory>
 #include <vector>
 
+#include "abi/frame_view.h"
 #include "classic/alias_model_gpu.h"
-#include "classic/frame_view.h"
+#include "classic/classic_pass.h"
 #include "gl/texture_upload.h"
 #include "illustrative/alias_shading_drawer.h"
 #include "illustrative/illustrative_model.h"
@@ -147,8 +148,8 @@ class IllustrativeShadingTest : public GlSuiteTest<IllustrativeShadingTest> {
                           GLuint masks = 0) {
         settings.show = show;
         gl_->clear(kBackground);
-        classic::FrameView view;
-        EXPECT_TRUE(classic::read_frame_view(frame_.build(make_camera(kEye, {}), 0), view));
+        npr::FrameView view;
+        EXPECT_TRUE(npr::read_frame_view(frame_.build(make_camera(kEye, {}), 0), view));
         const classic::SkinImageGpu* image = gpu_->skin_image(0, 0);
         classic::begin_classic_pass();
         AliasShadingTextures textures;

@@ -19,14 +19,15 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "abi/frame_view.h"
 #include "common/file_io.h"
 #include "formats/bsp.h"
 #include "formats/entities.h"
 #include "gl/program.h"
-#include "support/nprlib_test_support.h"
 #include "render/brush_model.h"
 #include "render/frustum.h"
 #include "render/world_culler.h"
+#include "support/nprlib_test_support.h"
 #include "support/test_data.h"
 #include "technical/brush_edge_drawer.h"
 #include "technical/brush_edge_mesh.h"
@@ -987,7 +988,7 @@ struct BoxScene {
     PolygonBrush brush;
     nqr_camera camera;
     nqr_entity entity;
-    classic::FrameView view;
+    npr::FrameView view;
 
     explicit BoxScene(PolygonBrush textured = PolygonBrush()) : brush(std::move(textured)) {
         add_box(brush, glm::vec3(-kBoxHalf), glm::vec3(kBoxHalf), false);
@@ -996,7 +997,7 @@ struct BoxScene {
         const glm::vec3 eye_model = kBoxEye - kBoxPlace;
         std::copy_n(glm::value_ptr(eye_model), 3, entity.eye_model);
         TestFrame frame;
-        classic::read_frame_view(frame.build(camera, 0), view);
+        npr::read_frame_view(frame.build(camera, 0), view);
     }
 
     glm::mat4 mvp() const {
@@ -1116,8 +1117,8 @@ TEST_F(BrushEdgeDrawTest, RoomSeenFromInsideHasValleyCornersOnly) {
     frame.use_visible_list = true;
     frame.visible = {0, 1, 2, 3, 4, 5};
     const nqr_frame* built = frame.build(camera, 1);
-    classic::FrameView view;
-    ASSERT_TRUE(classic::read_frame_view(built, view));
+    npr::FrameView view;
+    ASSERT_TRUE(npr::read_frame_view(built, view));
     gl_->clear();
     faces.draw(glm::make_mat4(camera.view_projection));
     drawer_.draw_world(view, frame_uniforms(camera), *built, *mesh_, base_colour_settings());
@@ -1206,8 +1207,8 @@ TEST_F(BrushEdgeDrawTest, BoundaryEdgesOutlineEntitiesOnly) {
         frame.use_visible_list = as == As::world_list;
         frame.visible = {0};
         const nqr_frame* built = frame.build(camera, 1);
-        classic::FrameView view;
-        classic::read_frame_view(built, view);
+        npr::FrameView view;
+        npr::read_frame_view(built, view);
         nqr_entity entity = make_entity(1);
         std::copy_n(glm::value_ptr(eye), 3, entity.eye_model);
         gl_->clear();
@@ -1291,8 +1292,8 @@ TEST_F(BrushEdgeDrawTest, StartMapWorldEdgesDrawWithoutAllocatingAndReportTheirC
     frame.use_visible_list = true;
     frame.visible = start.visible;
     const nqr_frame* built = frame.build(start.camera, 1);
-    classic::FrameView view;
-    ASSERT_TRUE(classic::read_frame_view(built, view));
+    npr::FrameView view;
+    ASSERT_TRUE(npr::read_frame_view(built, view));
     EdgeFrameUniforms uniforms = frame_uniforms(start.camera);
     uniforms.viewport = {float(TimingTarget::kWidth), float(TimingTarget::kHeight)};
     uniforms.z_near = 4.0f;

@@ -9,11 +9,12 @@
 #include <memory>
 #include <numbers>
 
+#include "abi/frame_view.h"
 #include "adjacency/feature_edges.h"
 #include "adjacency/model_adjacency.h"
 #include "classic/alias_drawer.h"
 #include "classic/alias_model_gpu.h"
-#include "classic/frame_view.h"
+#include "classic/classic_pass.h"
 #include "support/nprlib_test_support.h"
 #include "technical/alias_edge_drawer.h"
 #include "technical/alias_edge_mesh.h"
@@ -289,8 +290,8 @@ class TechnicalEdgesTest : public GlSuiteTest<TechnicalEdgesTest> {
                const TechnicalSettings& settings) {
         gl_->clear(kBackground);
         const nqr_frame* frame = frame_.build(camera, 0);
-        classic::FrameView view;
-        EXPECT_TRUE(classic::read_frame_view(frame, view));
+        npr::FrameView view;
+        EXPECT_TRUE(npr::read_frame_view(frame, view));
         technical::EdgeFrameUniforms uniforms;
         uniforms.projection = glm::make_mat4(camera.projection);
         uniforms.viewport = glm::vec2(kSize, kSize);
@@ -530,8 +531,8 @@ TEST_F(TechnicalEdgesTest, DrawingLeavesTheDocumentedGlState) {
     nqr_entity entity = fullbright_entity(1);
     const nqr_camera camera = corner_camera();
     place_eye(entity, camera);
-    classic::FrameView view;
-    ASSERT_TRUE(classic::read_frame_view(frame_.build(camera, 0), view));
+    npr::FrameView view;
+    ASSERT_TRUE(npr::read_frame_view(frame_.build(camera, 0), view));
     const technical::SkinSample skin = skin_of(*cube.faces, entity);
     TechnicalSettings settings = plain_settings();
     for (BackfaceLines policy : {BackfaceLines::never, BackfaceLines::always}) {

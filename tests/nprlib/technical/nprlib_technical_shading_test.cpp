@@ -8,8 +8,9 @@
 #include <numbers>
 #include <vector>
 
+#include "abi/frame_view.h"
 #include "classic/alias_model_gpu.h"
-#include "classic/frame_view.h"
+#include "classic/classic_pass.h"
 #include "support/nprlib_test_sphere.h"
 #include "support/nprlib_test_support.h"
 #include "technical/alias_face_drawer.h"
@@ -106,8 +107,8 @@ class TechnicalShadingTest : public GlSuiteTest<TechnicalShadingTest> {
 
     void draw(const ShadingSettings& settings, const nqr_camera& camera = front_camera()) {
         gl_->clear(kBackground);
-        classic::FrameView view;
-        ASSERT_TRUE(classic::read_frame_view(frame_.build(camera, 0), view));
+        npr::FrameView view;
+        ASSERT_TRUE(npr::read_frame_view(frame_.build(camera, 0), view));
         const classic::SkinImageGpu* image = gpu_->skin_image(0, 0);
         ASSERT_NE(image, nullptr);
         classic::begin_classic_pass();

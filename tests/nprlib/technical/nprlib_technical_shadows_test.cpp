@@ -9,8 +9,9 @@
 #include <tuple>
 #include <vector>
 
+#include "abi/frame_view.h"
 #include "classic/alias_model_gpu.h"
-#include "classic/frame_view.h"
+#include "classic/classic_pass.h"
 #include "gl/program.h"
 #include "support/nprlib_test_support.h"
 #include "technical/alias_edge_mesh.h"
@@ -344,7 +345,7 @@ void main() { o_color = vec4(u_color, 1.0); })";
         return true;
     }
 
-    void draw(const classic::FrameView& view) {
+    void draw(const npr::FrameView& view) {
         program_.use();
         glUniformMatrix4fv(program_.location("u_view_projection"), 1, GL_FALSE,
                            glm::value_ptr(view.view_projection));
@@ -443,9 +444,9 @@ class TechnicalShadowsTest : public GlSuiteTest<TechnicalShadowsTest> {
         std::copy_n(&light_.x, 3, entity_.light.direction);
     }
 
-    classic::FrameView view() {
-        classic::FrameView view;
-        EXPECT_TRUE(classic::read_frame_view(frame_.build(oblique_camera(), 0), view));
+    npr::FrameView view() {
+        npr::FrameView view;
+        EXPECT_TRUE(npr::read_frame_view(frame_.build(oblique_camera(), 0), view));
         return view;
     }
 

@@ -1,6 +1,5 @@
-// What every classic drawer reads from a frame's camera, as glm values, and the GL state the
-// classic hooks start from and leave behind: depth test on (GL_LEQUAL), depth writes on, no
-// blending, no face culling, depth range 0..1, vertex array 0, program 0.
+// What every style's drawers read from a frame's camera, as glm values: the matrices, the eye
+// and its axes, the view frustum's side planes.
 #pragma once
 
 #include <array>
@@ -12,7 +11,7 @@
 
 #include "nqr_renderer.h"
 
-namespace nq::npr::classic {
+namespace nq::npr {
 
 struct FrameView {
     glm::mat4 view_projection{1.0f};
@@ -34,16 +33,4 @@ bool sphere_outside_view(const FrameView& view, const glm::vec3& centre, float r
 // Normals from model space to view space.
 glm::mat3 normal_to_view(const FrameView& view, const glm::mat4& model);
 
-void begin_classic_pass();
-void end_classic_pass();
-
-// Entity alpha as drawn: ABI 1 = opaque; values <= 0 or >= 1 are treated as opaque (0 is what an
-// unset alpha looks like in the protocol extensions that carry one).
-float entity_alpha(float alpha);
-
-// The three passes alias models are drawn in, in this order: opaque ones, translucent ones
-// (blended, no depth writes), then the view model (squeezed into the near depth range).
-enum class AliasPass { opaque = 0, translucent = 1, view_model = 2 };
-AliasPass alias_pass_of(const nqr_entity& entity);
-
-}  // namespace nq::npr::classic
+}  // namespace nq::npr

@@ -1,13 +1,11 @@
-#include "classic/frame_view.h"
-
-#include <epoxy/gl.h>
+#include "abi/frame_view.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "classic/abi_access.h"
+#include "abi/abi_access.h"
 
-namespace nq::npr::classic {
+namespace nq::npr {
 
 glm::mat4 mat4_from(const float* column_major) {
     return glm::make_mat4(column_major);
@@ -43,32 +41,4 @@ glm::mat3 normal_to_view(const FrameView& view, const glm::mat4& model) {
     return glm::inverseTranspose(glm::mat3(view.view * model));
 }
 
-void begin_classic_pass() {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_TRUE);
-    glDepthRange(0.0, 1.0);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-}
-
-void end_classic_pass() {
-    glDepthMask(GL_TRUE);
-    glDepthRange(0.0, 1.0);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glBindVertexArray(0);
-    glUseProgram(0);
-    glActiveTexture(GL_TEXTURE0);
-}
-
-float entity_alpha(float alpha) {
-    return (alpha <= 0.0f || alpha >= 1.0f) ? 1.0f : alpha;
-}
-
-AliasPass alias_pass_of(const nqr_entity& entity) {
-    if ((entity.flags & NQR_ENTITY_VIEWMODEL) != 0) return AliasPass::view_model;
-    return entity_alpha(entity.alpha) < 1.0f ? AliasPass::translucent : AliasPass::opaque;
-}
-
-}  // namespace nq::npr::classic
+}  // namespace nq::npr
