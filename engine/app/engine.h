@@ -1,23 +1,17 @@
-// nprquake: the engine that ties everything together. It owns the host core (cvars, commands),
-// the virtual filesystem, the window, the console, the renderer plugins and what they draw
-// (a demo's level, or the showroom), and runs the frame loop:
+// nprquake's shell: it reads the command line, mounts the game data, registers its own cvars
+// and commands (quit, r_plugin, screenshot, showroom, path) and runs the frame loop over its
+// wings, each with its own state (docs/architecture.md):
 //
-//   events -> command buffer -> demo (client state) -> scene (nqr_frame) -> plugin hooks
-//   -> view tints and status bar (hud) -> console -> gamma -> swap (and wait while the driver
-//   has too many frames queued)
-//   -> timedemo statistics (the timedemo wing)
+//   events (screen, overlay) -> command buffer -> the session's frame (sessions: a demo or the
+//   game) -> the frame drawn (frame: scene, plugin hooks) -> HUD, menu, console (overlay)
+//   -> gamma and swap (screen) -> sound -> timedemo statistics (timedemo)
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "app/frame/frame_renderer.h"
-#include "app/frame/host_services.h"
-#include "app/frame/render_dispatch.h"
-#include "app/frame/scene_builder.h"
-#include "app/frame/showroom.h"
 #include "app/obscurance_cvars.h"
 #include "app/sessions/session_controller.h"
 #include "app/shell/frame_clock.h"
@@ -29,7 +23,6 @@
 #include "host/command_line.h"
 #include "host/host_core.h"
 #include "host/launch_options.h"
-#include "plugin/plugin_host.h"
 #include "sound/game_sound.h"
 
 namespace nq {

@@ -17,7 +17,6 @@ namespace {
 
 using vm::Vec3f;
 using vm::Vm;
-namespace m = qmath;
 
 constexpr int kMsgBroadcast = 0, kMsgOne = 1, kMsgAll = 2, kMsgInit = 3;
 constexpr float kDamageAim = 2;
@@ -58,14 +57,14 @@ void set_min_max_size(Vm& vm, void* host, uint32_t e, const Vec3f& mins, const V
     }
     vm.set_field_vector(e, F(host).mins, mins);
     vm.set_field_vector(e, F(host).maxs, maxs);
-    vm.set_field_vector(e, F(host).size, m::sub(maxs, mins));
+    vm.set_field_vector(e, F(host).size, vsub(maxs, mins));
     L(host).world.link(e, false);
 }
 
 // ---- #1..#20
 
 void makevectors(Vm& vm, void* host) {
-    const m::Basis b = m::angle_vectors(vm.param_vector(0));
+    const Basis b = angle_vectors(vm.param_vector(0));
     vm.set_global_vector(G(host).v_forward, b.forward);
     vm.set_global_vector(G(host).v_right, b.right);
     vm.set_global_vector(G(host).v_up, b.up);
@@ -90,7 +89,7 @@ void setmodel(Vm& vm, void* host) {
         // Quake loads a brush model's bounds spread by a unit each way (some compilers write
         // zero-thickness trigger boxes whose stored mins pass their maxs).
         const BspModel& b = model.bsp->models[model.submodel];
-        set_min_max_size(vm, host, e, m::sub(b.mins, {1, 1, 1}), m::add(b.maxs, {1, 1, 1}));
+        set_min_max_size(vm, host, e, vsub(b.mins, {1, 1, 1}), vadd(b.maxs, {1, 1, 1}));
     } else if (index > 0) {
         set_min_max_size(vm, host, e, {-16, -16, -16}, {16, 16, 16});  // Quake's alias box
     } else {
@@ -117,8 +116,8 @@ void sound(Vm& vm, void* host) {
 
 void normalize(Vm& vm, void*) {
     const Vec3f v = vm.param_vector(0);
-    const float len = m::length(v);
-    vm.return_vector(len == 0 ? Vec3f{0, 0, 0} : m::scale(v, 1.0f / len));
+    const float len = vlength(v);
+    vm.return_vector(len == 0 ? Vec3f{0, 0, 0} : vscale(v, 1.0f / len));
 }
 
 void error(Vm& vm, void* host) {
@@ -135,7 +134,7 @@ void objerror(Vm& vm, void* host) {
 }
 
 void vlen(Vm& vm, void*) {
-    vm.return_float(m::length(vm.param_vector(0)));
+    vm.return_float(vlength(vm.param_vector(0)));
 }
 
 float yaw_of(const Vec3f& v) {
@@ -197,9 +196,9 @@ void checkclient(Vm& vm, void* host) {
         return vm.return_edict(0);
     }
     const uint32_t self = self_edict(vm, host);
-    const Vec3f eye = m::add(vm.field_vector(self, f.origin), vm.field_vector(self, f.view_ofs));
+    const Vec3f eye = vadd(vm.field_vector(self, f.origin), vm.field_vector(self, f.view_ofs));
     const Vec3f client_eye =
-        m::add(vm.field_vector(client, f.origin), vm.field_vector(client, f.view_ofs));
+        vadd(vm.field_vector(client, f.origin), vm.field_vector(client, f.view_ofs));
     const std::span<const uint8_t> row = level.pvs_of(client_eye);
     vm.return_edict(row.empty() || pvs_contains(row, leaf_at(*level.bsp, eye)) ? client : 0);
 }
@@ -255,9 +254,9 @@ void findradius(Vm& vm, void* host) {
     for (uint32_t e = 1; e < vm.num_edicts(); ++e) {
         if (L(host).edicts.is_free(e) || int(vm.field_float(e, f.solid)) == qc::kSolidNot) continue;
         const Vec3f centre =
-            m::add(vm.field_vector(e, f.origin),
-                   m::scale(m::add(vm.field_vector(e, f.mins), vm.field_vector(e, f.maxs)), 0.5f));
-        if (m::length(m::sub(org, centre)) > radius) continue;
+            vadd(vm.field_vector(e, f.origin),
+                 vscale(vadd(vm.field_vector(e, f.mins), vm.field_vector(e, f.maxs)), 0.5f));
+        if (vlength(vsub(org, centre)) > radius) continue;
         vm.set_field_int(e, f.chain, int32_t(vm.entity_value(chain)));
         chain = e;
     }
@@ -372,9 +371,9 @@ void aim(Vm& vm, void* host) {
     ServerLevel& level = L(host);
     const FieldOffsets& f = F(host);
     const uint32_t shooter = vm.param_edict(0);
-    const Vec3f start = m::add(vm.field_vector(shooter, f.origin), {0, 0, 20});
+    const Vec3f start = vadd(vm.field_vector(shooter, f.origin), {0, 0, 20});
     const Vec3f forward = vm.global_vector(G(host).v_forward);
-    MoveTrace tr = level.world.move(start, {0, 0, 0}, {0, 0, 0}, m::mad(start, 2048, forward),
+    MoveTrace tr = level.world.move(start, {0, 0, 0}, {0, 0, 0}, vmad(start, 2048, forward),
                                     MoveKind::normal, shooter);
     if (tr.entity && *tr.entity != 0 && vm.field_float(*tr.entity, f.takedamage) == kDamageAim) {
         return vm.return_vector(forward);
@@ -386,13 +385,13 @@ void aim(Vm& vm, void* host) {
         if (e == shooter || level.edicts.is_free(e)) continue;
         if (vm.field_float(e, f.takedamage) != kDamageAim) continue;
         const Vec3f centre =
-            m::add(vm.field_vector(e, f.origin),
-                   m::scale(m::add(vm.field_vector(e, f.mins), vm.field_vector(e, f.maxs)), 0.5f));
-        Vec3f dir = m::sub(centre, start);
-        const float len = m::length(dir);
+            vadd(vm.field_vector(e, f.origin),
+                 vscale(vadd(vm.field_vector(e, f.mins), vm.field_vector(e, f.maxs)), 0.5f));
+        Vec3f dir = vsub(centre, start);
+        const float len = vlength(dir);
         if (len == 0) continue;
-        dir = m::scale(dir, 1 / len);
-        const float d = m::dot(dir, forward);
+        dir = vscale(dir, 1 / len);
+        const float d = vdot(dir, forward);
         if (d < best) continue;
         tr = level.world.move(start, {0, 0, 0}, {0, 0, 0}, centre, MoveKind::normal, shooter);
         if (tr.entity && *tr.entity == e) {
@@ -403,11 +402,11 @@ void aim(Vm& vm, void* host) {
     if (!best_dir) return vm.return_vector(forward);
     Vec3f dir = forward;
     dir[2] = 0;
-    const float flat = m::length(dir);
-    dir = flat > 0 ? m::scale(dir, 1 / flat) : dir;
+    const float flat = vlength(dir);
+    dir = flat > 0 ? vscale(dir, 1 / flat) : dir;
     dir[2] = (*best_dir)[2];
-    const float len = m::length(dir);
-    vm.return_vector(len > 0 ? m::scale(dir, 1 / len) : forward);
+    const float len = vlength(dir);
+    vm.return_vector(len > 0 ? vscale(dir, 1 / len) : forward);
 }
 
 void cvar(Vm& vm, void* host) {

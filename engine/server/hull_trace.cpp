@@ -6,9 +6,6 @@ namespace nq::server {
 
 namespace {
 
-using qmath::add;
-using qmath::sub;
-
 // Double precision, as trace_hull measures, so both agree on which side a point lies.
 double plane_distance(const BspPlane& plane, const Vec3f& p) {
     return double{plane.normal[0]} * p[0] + double{plane.normal[1]} * p[1] +
@@ -59,8 +56,8 @@ void mark_contents(const Bsp& bsp, const BspHull& hull, int32_t node, const Vec3
 
 MoveTrace trace_placed_hull(const Bsp& bsp, int hull, size_t model, const Vec3f& offset,
                             const Vec3f& start, const Vec3f& end) {
-    const Vec3f start_l = sub(start, offset);
-    const Vec3f end_l = sub(end, offset);
+    const Vec3f start_l = vsub(start, offset);
+    const Vec3f end_l = vsub(end, offset);
     const BspTrace t = trace_hull(bsp, hull, start_l, end_l, model);
     MoveTrace r;
     r.end_pos = end;
@@ -71,7 +68,7 @@ MoveTrace trace_placed_hull(const Bsp& bsp, int hull, size_t model, const Vec3f&
     r.fraction = t.fraction;
     r.plane_normal = t.plane_normal;
     r.plane_dist = t.plane_dist;  // stays in the hull's space, as in Quake
-    if (t.fraction < 1) r.end_pos = add(t.end, offset);
+    if (t.fraction < 1) r.end_pos = vadd(t.end, offset);
     if (hull >= 0 && hull < static_cast<int>(bsp.hulls.size()) && model < bsp.models.size()) {
         mark_contents(bsp, bsp.hulls[hull], bsp.models[model].headnodes[hull], start_l,
                       t.fraction < 1 ? t.end : end_l, r, 0);

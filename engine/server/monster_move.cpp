@@ -33,7 +33,7 @@ bool fly_step(GameState& game, uint32_t edict, const Vec3f& move, bool relink) {
     const uint32_t enemy = edict_field(game, edict, f.enemy);
     for (int attempt = 0; attempt < 2; ++attempt) {
         const Vec3f origin = vm.field_vector(edict, f.origin);
-        Vec3f target = qmath::add(origin, move);
+        Vec3f target = vadd(origin, move);
         if (attempt == 0 && enemy != 0) {
             const float dz = origin[2] - vm.field_vector(enemy, f.origin)[2];
             if (dz > 40) target[2] -= 8;
@@ -65,7 +65,7 @@ bool ground_step(GameState& game, uint32_t edict, const Vec3f& move, bool relink
     const Vec3f old_origin = vm.field_vector(edict, f.origin);
     const Vec3f mins = vm.field_vector(edict, f.mins);
     const Vec3f maxs = vm.field_vector(edict, f.maxs);
-    Vec3f top = qmath::add(old_origin, move);
+    Vec3f top = vadd(old_origin, move);
     top[2] += step;
     const Vec3f bottom = {top[0], top[1], top[2] - 2 * step};
     MoveTrace trace = game.world.move(top, mins, maxs, bottom, MoveKind::normal, edict);
@@ -79,7 +79,7 @@ bool ground_step(GameState& game, uint32_t edict, const Vec3f& move, bool relink
     if (trace.fraction == 1) {
         // Nothing below: only a monster whose ground was pulled away may go (and fall).
         if (!(fl & qc::kFlPartialGround)) return false;
-        vm.set_field_vector(edict, f.origin, qmath::add(old_origin, move));
+        vm.set_field_vector(edict, f.origin, vadd(old_origin, move));
         relink_if(game, edict, relink);
         set_flags(game, edict, flags(game, edict) & ~qc::kFlOnGround);
         return true;
@@ -153,8 +153,7 @@ void new_chase_dir(GameState& game, uint32_t edict, uint32_t goal, float dist, G
     const float old_dir =
         qmath::angle_mod(float(int(vm.field_float(edict, f.ideal_yaw) / 45) * 45));
     const float turnaround = qmath::angle_mod(old_dir - 180);
-    const Vec3f delta =
-        qmath::sub(vm.field_vector(goal, f.origin), vm.field_vector(edict, f.origin));
+    const Vec3f delta = vsub(vm.field_vector(goal, f.origin), vm.field_vector(edict, f.origin));
     float d1 = kNoDir, d2 = kNoDir;
     directions_to(delta, d1, d2);
     if (d1 != kNoDir && d2 != kNoDir) {
@@ -205,8 +204,8 @@ bool check_bottom(GameState& game, uint32_t edict) {
     vm::Vm& vm = game.vm;
     const FieldOffsets& f = game.f();
     const Vec3f origin = vm.field_vector(edict, f.origin);
-    const Vec3f mins = qmath::add(origin, vm.field_vector(edict, f.mins));
-    const Vec3f maxs = qmath::add(origin, vm.field_vector(edict, f.maxs));
+    const Vec3f mins = vadd(origin, vm.field_vector(edict, f.mins));
+    const Vec3f maxs = vadd(origin, vm.field_vector(edict, f.maxs));
     // Solid world just under all four corners: certainly standing.
     bool all_solid = true;
     for (int i = 0; i < 4 && all_solid; ++i) {

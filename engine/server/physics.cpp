@@ -20,11 +20,11 @@ void physics_noclip(GameState& game, uint32_t edict) {
     vm::Vm& vm = game.vm;
     const FieldOffsets& f = game.f();
     vm.set_field_vector(edict, f.angles,
-                        qmath::mad(vm.field_vector(edict, f.angles), game.frame_time,
-                                   vm.field_vector(edict, f.avelocity)));
+                        vmad(vm.field_vector(edict, f.angles), game.frame_time,
+                             vm.field_vector(edict, f.avelocity)));
     vm.set_field_vector(edict, f.origin,
-                        qmath::mad(vm.field_vector(edict, f.origin), game.frame_time,
-                                   vm.field_vector(edict, f.velocity)));
+                        vmad(vm.field_vector(edict, f.origin), game.frame_time,
+                             vm.field_vector(edict, f.velocity)));
     game.world.link(edict, false);
 }
 
@@ -38,9 +38,9 @@ void physics_toss(GameState& game, uint32_t edict, ServerHost* host) {
     const int type = movetype(game, edict);
     if (type != qc::kMoveFly && type != qc::kMoveFlyMissile) add_gravity(game, edict);
     vm.set_field_vector(edict, f.angles,
-                        qmath::mad(vm.field_vector(edict, f.angles), game.frame_time,
-                                   vm.field_vector(edict, f.avelocity)));
-    const Vec3f move = qmath::scale(vm.field_vector(edict, f.velocity), game.frame_time);
+                        vmad(vm.field_vector(edict, f.angles), game.frame_time,
+                             vm.field_vector(edict, f.avelocity)));
+    const Vec3f move = vscale(vm.field_vector(edict, f.velocity), game.frame_time);
     const MoveTrace trace = push_entity(game, edict, move);
     // Quake looks for water only after hitting something, so a free flight never splashes.
     if (trace.fraction == 1 || game.edicts.is_free(edict)) return;
@@ -102,8 +102,8 @@ bool move_client(GameState& game, uint32_t edict, int type, ServerHost* host) {
         case qc::kMoveNoclip:
             if (!run_think(game, edict)) return false;
             vm.set_field_vector(edict, game.f().origin,
-                                qmath::mad(vm.field_vector(edict, game.f().origin), game.frame_time,
-                                           vm.field_vector(edict, game.f().velocity)));
+                                vmad(vm.field_vector(edict, game.f().origin), game.frame_time,
+                                     vm.field_vector(edict, game.f().velocity)));
             return true;
         default:
             return run_think(game, edict);

@@ -139,7 +139,7 @@ int clip_velocity(const Vec3f& in, const Vec3f& normal, Vec3f& out, float overbo
     int blocked = 0;
     if (normal[2] > 0) blocked |= kBlockedFloor;
     if (normal[2] == 0) blocked |= kBlockedStep;
-    const float backoff = qmath::dot(in, normal) * overbounce;
+    const float backoff = vdot(in, normal) * overbounce;
     for (int i = 0; i < 3; ++i) {
         out[i] = in[i] - normal[i] * backoff;
         if (out[i] > -kStopEpsilon && out[i] < kStopEpsilon) out[i] = 0;
@@ -157,7 +157,7 @@ bool slide_along_planes(const Vec3f* planes, int count, const Vec3f& original, V
         clip_velocity(original, planes[i], slid, 1);
         bool fits = true;
         for (int j = 0; j < count && fits; ++j) {
-            if (j != i && qmath::dot(slid, planes[j]) < 0) fits = false;
+            if (j != i && vdot(slid, planes[j]) < 0) fits = false;
         }
         if (fits) {
             velocity = slid;
@@ -166,7 +166,7 @@ bool slide_along_planes(const Vec3f* planes, int count, const Vec3f& original, V
     }
     if (count != 2) return false;
     const Vec3f dir = cross(planes[0], planes[1]);
-    velocity = qmath::scale(dir, qmath::dot(dir, velocity));
+    velocity = vscale(dir, vdot(dir, velocity));
     return true;
 }
 
@@ -185,7 +185,7 @@ int fly_move(GameState& game, uint32_t edict, float time, MoveTrace* step_trace)
         Vec3f velocity = vm.field_vector(edict, f.velocity);
         if (is_zero(velocity)) break;
         const Vec3f origin = vm.field_vector(edict, f.origin);
-        const Vec3f end = qmath::mad(origin, time_left, velocity);
+        const Vec3f end = vmad(origin, time_left, velocity);
         const MoveTrace trace =
             game.world.move(origin, vm.field_vector(edict, f.mins), vm.field_vector(edict, f.maxs),
                             end, MoveKind::normal, edict);
@@ -225,7 +225,7 @@ int fly_move(GameState& game, uint32_t edict, float time, MoveTrace* step_trace)
             return kBlockedTrapped;
         }
         // Turned against where it first went: stop dead, so sloping corners cannot jitter.
-        if (qmath::dot(velocity, primal_velocity) <= 0) velocity = {0, 0, 0};
+        if (vdot(velocity, primal_velocity) <= 0) velocity = {0, 0, 0};
         vm.set_field_vector(edict, f.velocity, velocity);
         if (is_zero(velocity)) return blocked;
     }
@@ -238,7 +238,7 @@ MoveTrace push_entity(GameState& game, uint32_t edict, const Vec3f& push) {
     const Vec3f origin = vm.field_vector(edict, f.origin);
     const MoveTrace trace =
         game.world.move(origin, vm.field_vector(edict, f.mins), vm.field_vector(edict, f.maxs),
-                        qmath::add(origin, push), push_kind(game, edict), edict);
+                        vadd(origin, push), push_kind(game, edict), edict);
     vm.set_field_vector(edict, f.origin, trace.end_pos);
     game.world.link(edict, true);
     if (trace.entity) impact(game, edict, *trace.entity);

@@ -78,11 +78,11 @@ void push_move(GameState& game, uint32_t pusher, float move_time, std::vector<Mo
         vm.set_field_float(pusher, f.ltime, vm.field_float(pusher, f.ltime) + move_time);
         return;
     }
-    const Vec3f move = qmath::scale(velocity, move_time);
-    const Box swept = {qmath::add(vm.field_vector(pusher, f.absmin), move),
-                       qmath::add(vm.field_vector(pusher, f.absmax), move)};
+    const Vec3f move = vscale(velocity, move_time);
+    const Box swept = {vadd(vm.field_vector(pusher, f.absmin), move),
+                       vadd(vm.field_vector(pusher, f.absmax), move)};
     const Vec3f pusher_from = vm.field_vector(pusher, f.origin);
-    vm.set_field_vector(pusher, f.origin, qmath::add(pusher_from, move));
+    vm.set_field_vector(pusher, f.origin, vadd(pusher_from, move));
     vm.set_field_float(pusher, f.ltime, vm.field_float(pusher, f.ltime) + move_time);
     game.world.link(pusher, false);
 

@@ -26,12 +26,12 @@ void unstuck(GameState& game, uint32_t edict, ServerHost* host) {
 void wall_friction(GameState& game, uint32_t edict, const MoveTrace& wall) {
     vm::Vm& vm = game.vm;
     const FieldOffsets& f = game.f();
-    const Vec3f forward = qmath::angle_vectors(vm.field_vector(edict, f.v_angle)).forward;
-    const float facing = qmath::dot(wall.plane_normal, forward) + 0.5f;
+    const Vec3f forward = angle_vectors(vm.field_vector(edict, f.v_angle)).forward;
+    const float facing = vdot(wall.plane_normal, forward) + 0.5f;
     if (facing >= 0) return;
     Vec3f velocity = vm.field_vector(edict, f.velocity);
-    const float into = qmath::dot(wall.plane_normal, velocity);
-    const Vec3f side = qmath::sub(velocity, qmath::scale(wall.plane_normal, into));
+    const float into = vdot(wall.plane_normal, velocity);
+    const Vec3f side = vsub(velocity, vscale(wall.plane_normal, into));
     velocity[0] = side[0] * (1 + facing);
     velocity[1] = side[1] * (1 + facing);
     vm.set_field_vector(edict, f.velocity, velocity);

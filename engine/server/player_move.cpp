@@ -19,8 +19,8 @@ constexpr int kPitch = 0, kYaw = 1, kRoll = 2;
 
 // VectorNormalize: scales `v` to unit length (a zero vector stays zero), returns the length.
 float normalize(Vec3f& v) {
-    const float len = qmath::length(v);
-    if (len != 0) v = qmath::scale(v, 1 / len);
+    const float len = vlength(v);
+    if (len != 0) v = vscale(v, 1 / len);
     return len;
 }
 
@@ -38,7 +38,7 @@ void drop_punch_angle(GameState& game, uint32_t edict) {
     Vec3f punch = game.vm.field_vector(edict, field);
     float len = normalize(punch) - 10 * game.frame_time;
     if (len < 0) len = 0;
-    game.vm.set_field_vector(edict, field, qmath::scale(punch, len));
+    game.vm.set_field_vector(edict, field, vscale(punch, len));
 }
 
 // SV_UserFriction: ground friction, doubled (sv_edgefriction) when the ground 16 units ahead
@@ -59,16 +59,16 @@ void user_friction(PlayerMove& m) {
     const float control = speed < s.stop_speed ? s.stop_speed : speed;
     float new_speed = speed - m.game.frame_time * control * friction;
     if (new_speed < 0) new_speed = 0;
-    vel = qmath::scale(vel, new_speed / speed);
+    vel = vscale(vel, new_speed / speed);
 }
 
 // SV_Accelerate: towards wishspeed along wishdir, at most sv_accelerate * wishspeed per second.
 void accelerate(PlayerMove& m, float wish_speed, const Vec3f& wish_dir) {
-    const float add_speed = wish_speed - qmath::dot(m.velocity, wish_dir);
+    const float add_speed = wish_speed - vdot(m.velocity, wish_dir);
     if (add_speed <= 0) return;
     float accel_speed = m.game.settings.accelerate * m.game.frame_time * wish_speed;
     if (accel_speed > add_speed) accel_speed = add_speed;
-    m.velocity = qmath::mad(m.velocity, accel_speed, wish_dir);
+    m.velocity = vmad(m.velocity, accel_speed, wish_dir);
 }
 
 // SV_AirAccelerate: in the air only the first 30 units/s along the wish direction can be
@@ -76,39 +76,37 @@ void accelerate(PlayerMove& m, float wish_speed, const Vec3f& wish_dir) {
 void air_accelerate(PlayerMove& m, float wish_speed, Vec3f wish_velocity) {
     float capped = normalize(wish_velocity);
     if (capped > 30) capped = 30;
-    const float add_speed = capped - qmath::dot(m.velocity, wish_velocity);
+    const float add_speed = capped - vdot(m.velocity, wish_velocity);
     if (add_speed <= 0) return;
     float accel_speed = m.game.settings.accelerate * wish_speed * m.game.frame_time;
     if (accel_speed > add_speed) accel_speed = add_speed;
-    m.velocity = qmath::mad(m.velocity, accel_speed, wish_velocity);
+    m.velocity = vmad(m.velocity, accel_speed, wish_velocity);
 }
 
 // SV_WaterMove: swim where the view points at 70% speed, sink slowly when idle.
 void water_move(PlayerMove& m) {
     const PhysicsSettings& s = m.game.settings;
     const float dt = m.game.frame_time;
-    const qmath::Basis b =
-        qmath::angle_vectors(m.game.vm.field_vector(m.edict, m.game.f().v_angle));
-    Vec3f wish = qmath::add(qmath::scale(b.forward, m.cmd.forward_move),
-                            qmath::scale(b.right, m.cmd.side_move));
+    const Basis b = angle_vectors(m.game.vm.field_vector(m.edict, m.game.f().v_angle));
+    Vec3f wish = vadd(vscale(b.forward, m.cmd.forward_move), vscale(b.right, m.cmd.side_move));
     if (m.cmd.forward_move == 0 && m.cmd.side_move == 0 && m.cmd.up_move == 0) {
         wish[2] -= 60;
     } else {
         wish[2] += m.cmd.up_move;
     }
-    float wish_speed = qmath::length(wish);
+    float wish_speed = vlength(wish);
     if (wish_speed > s.max_speed) {
-        wish = qmath::scale(wish, s.max_speed / wish_speed);
+        wish = vscale(wish, s.max_speed / wish_speed);
         wish_speed = s.max_speed;
     }
     wish_speed *= 0.7f;
 
-    const float speed = qmath::length(m.velocity);
+    const float speed = vlength(m.velocity);
     float new_speed = 0;
     if (speed != 0) {
         new_speed = speed - dt * speed * s.water_friction;
         if (new_speed < 0) new_speed = 0;
-        m.velocity = qmath::scale(m.velocity, new_speed / speed);
+        m.velocity = vscale(m.velocity, new_speed / speed);
     }
     if (wish_speed == 0) return;
     const float add_speed = wish_speed - new_speed;
@@ -116,7 +114,7 @@ void water_move(PlayerMove& m) {
     normalize(wish);
     float accel_speed = s.water_accelerate * wish_speed * dt;
     if (accel_speed > add_speed) accel_speed = add_speed;
-    m.velocity = qmath::mad(m.velocity, accel_speed, wish);
+    m.velocity = vmad(m.velocity, accel_speed, wish);
 }
 
 // SV_WaterJump: QuakeC launched the player out of water; keep its horizontal push (movedir)
@@ -139,20 +137,19 @@ void air_move(PlayerMove& m, bool on_ground) {
     vm::Vm& vm = m.game.vm;
     const FieldOffsets& f = m.game.f();
     const PhysicsSettings& s = m.game.settings;
-    const qmath::Basis b = qmath::angle_vectors(vm.field_vector(m.edict, f.angles));
+    const Basis b = angle_vectors(vm.field_vector(m.edict, f.angles));
     float forward_move = m.cmd.forward_move;
     // Just teleported: no backing into the teleporter.
     if (m.game.time < double(vm.field_float(m.edict, f.teleport_time)) && forward_move < 0) {
         forward_move = 0;
     }
-    Vec3f wish =
-        qmath::add(qmath::scale(b.forward, forward_move), qmath::scale(b.right, m.cmd.side_move));
+    Vec3f wish = vadd(vscale(b.forward, forward_move), vscale(b.right, m.cmd.side_move));
     const int type = movetype(m.game, m.edict);
     wish[2] = type != qc::kMoveWalk ? m.cmd.up_move : 0;
     Vec3f wish_dir = wish;
     float wish_speed = normalize(wish_dir);
     if (wish_speed > s.max_speed) {
-        wish = qmath::scale(wish, s.max_speed / wish_speed);
+        wish = vscale(wish, s.max_speed / wish_speed);
         wish_speed = s.max_speed;
     }
     if (type == qc::kMoveNoclip) {
@@ -170,7 +167,7 @@ void set_body_angles(GameState& game, uint32_t edict) {
     vm::Vm& vm = game.vm;
     const FieldOffsets& f = game.f();
     const Vec3f view =
-        qmath::add(vm.field_vector(edict, f.v_angle), vm.field_vector(edict, f.punchangle));
+        vadd(vm.field_vector(edict, f.v_angle), vm.field_vector(edict, f.punchangle));
     Vec3f angles = vm.field_vector(edict, f.angles);
     angles[kRoll] = calc_roll(angles, vm.field_vector(edict, f.velocity)) * 4;
     if (vm.field_float(edict, f.fixangle) == 0) {
@@ -183,7 +180,7 @@ void set_body_angles(GameState& game, uint32_t edict) {
 }  // namespace
 
 float calc_roll(const Vec3f& angles, const Vec3f& velocity) {
-    float side = qmath::dot(velocity, qmath::angle_vectors(angles).right);
+    float side = vdot(velocity, angle_vectors(angles).right);
     const float sign = side < 0 ? -1.0f : 1.0f;
     side = std::fabs(side);
     side = side < kRollSpeed ? side * kRollAngle / kRollSpeed : kRollAngle;

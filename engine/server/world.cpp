@@ -14,9 +14,6 @@ constexpr int32_t kCurrentFirst = -9;
 constexpr int32_t kCurrentLast = -14;
 constexpr float kMissileHalfSize = 15;  // MOVE_MISSILE's box against monsters
 
-using qmath::add;
-using qmath::sub;
-
 bool boxes_overlap(const Vec3f& amin, const Vec3f& amax, const Vec3f& bmin, const Vec3f& bmax) {
     for (int i = 0; i < 3; ++i) {
         if (amin[i] > bmax[i] || amax[i] < bmin[i]) return false;
@@ -36,7 +33,7 @@ int hull_for_size(const Vec3f& mins, const Vec3f& maxs) {
 MoveTrace trace_brush(const Bsp& bsp, size_t submodel, const Vec3f& origin, const Vec3f& start,
                       const Vec3f& mins, const Vec3f& maxs, const Vec3f& end) {
     const int hull = hull_for_size(mins, maxs);
-    const Vec3f offset = add(sub(bsp.hulls[hull].clip_mins, mins), origin);
+    const Vec3f offset = vadd(vsub(bsp.hulls[hull].clip_mins, mins), origin);
     return trace_placed_hull(bsp, hull, submodel, offset, start, end);
 }
 
@@ -106,8 +103,8 @@ void World::link(uint32_t edict, bool touch) {
     if (edict == 0 || is_free(edict)) return;
 
     const Vec3f origin = vm_.field_vector(edict, fields_.origin);
-    Vec3f absmin = add(origin, vm_.field_vector(edict, fields_.mins));
-    Vec3f absmax = add(origin, vm_.field_vector(edict, fields_.maxs));
+    Vec3f absmin = vadd(origin, vm_.field_vector(edict, fields_.mins));
+    Vec3f absmax = vadd(origin, vm_.field_vector(edict, fields_.maxs));
     // Items grow sideways to be picked up off shelves; everything else by the 1 unit a move
     // stops short of what it hits, so boxes that almost touch are still checked.
     const bool item = (truncated(edict, fields_.flags) & qc::kFlItem) != 0;
@@ -218,8 +215,8 @@ MoveTrace World::clip_to_entity(uint32_t edict, const Vec3f& start, const Vec3f&
     if (const CollisionModel* model = brush_model(edict)) {
         t = trace_brush(*model->bsp, model->submodel, origin, start, mins, maxs, end);
     } else {
-        const Bsp& box = box_.set(sub(vm_.field_vector(edict, fields_.mins), maxs),
-                                  sub(vm_.field_vector(edict, fields_.maxs), mins));
+        const Bsp& box = box_.set(vsub(vm_.field_vector(edict, fields_.mins), maxs),
+                                  vsub(vm_.field_vector(edict, fields_.maxs), mins));
         t = trace_placed_hull(box, BoxHull::kHull, 0, origin, start, end);
     }
     if (t.fraction < 1 || t.start_solid) t.entity = edict;
