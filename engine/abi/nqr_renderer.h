@@ -7,6 +7,18 @@
  *   newer side may append fields at the end and an older side still reads the prefix it knows.
  *   NQR_ABI_VERSION = major << 16 | minor. A different major is refused by both sides; a newer
  *   minor only appends. The engine re-checks the version and every size it is handed.
+ *   A struct held by value inside another cannot grow (every field after it would move), so
+ *   none is: a struct that may grow is reached through a pointer (nqr_frame.camera,
+ *   nqr_entity.light, nqr_entity_light.lights) and read by its own size; arrays held by value
+ *   are of scalars only.
+ *   2.0 is the baseline every 2.x struct reaches; 1.x plugins still load (the engine converts
+ *   frames to the 1.x layout and gives them services without a context; docs/plugins.md).
+ *
+ * CONTEXTS
+ *   Neither side keeps globals. Every engine service takes the table's `context` as its first
+ *   argument; every renderer hook but init takes `self`, the instance that init returned. One
+ *   library may run two instances at once (`r_plugin` naming the active style loads the new
+ *   one before the old one shuts down), so a plugin keeps its state in its instance.
  *
  * ENTRY POINT
  *   A plugin is a shared library (nqr_<name>.so in the plugins directory) exporting
@@ -42,8 +54,8 @@
 extern "C" {
 #endif
 
-#define NQR_ABI_VERSION_MAJOR 1u
-#define NQR_ABI_VERSION_MINOR 5u
+#define NQR_ABI_VERSION_MAJOR 2u
+#define NQR_ABI_VERSION_MINOR 0u
 #define NQR_ABI_VERSION ((NQR_ABI_VERSION_MAJOR << 16) | NQR_ABI_VERSION_MINOR)
 #define NQR_ABI_MAJOR(v) ((uint32_t)(v) >> 16)
 #define NQR_ENTRY_POINT "nqr_get_renderer"
@@ -97,38 +109,41 @@ typedef struct nqr_trace {
     int32_t start_solid;
 } nqr_trace;
 
+/* The engine's services. Each plugin instance gets a table of its own (its `context` tells the
+ * engine who is calling), valid until the instance's shutdown returns. */
 typedef struct nqr_engine {
     uint32_t size;
     uint32_t abi_version;
+    void* context; /* the first argument of every service below */
 
-    void (*log)(int level, const char* text);
+    void (*log)(void* context, int level, const char* text);
 
     /* Registered cvars and commands belong to the calling plugin: on unload its commands are
      * removed and its cvars stay, with their values, for the next plugin that registers them. */
-    const nqr_cvar* (*cvar_register)(const char* name, const char* default_value, uint32_t flags,
-                                     const char* description);
-    void (*cvar_set)(const char* name, const char* value);
-    int (*command_register)(const char* name, nqr_command_fn fn, void* user,
+    const nqr_cvar* (*cvar_register)(void* context, const char* name, const char* default_value,
+                                     uint32_t flags, const char* description);
+    void (*cvar_set)(void* context, const char* name, const char* value);
+    int (*command_register)(void* context, const char* name, nqr_command_fn fn, void* user,
                             const char* description);
 
     /* Reads a file through the virtual filesystem (game dirs, paks). 0 on success; hand the
      * blob back with file_free. */
-    int (*file_read)(const char* path, nqr_blob* out);
-    void (*file_free)(nqr_blob* blob);
+    int (*file_read)(void* context, const char* path, nqr_blob* out);
+    void (*file_free)(void* context, nqr_blob* blob);
 
-    void* (*gl_get_proc_address)(const char* name);
-    double (*real_time)(void); /* monotonic seconds */
+    void* (*gl_get_proc_address)(void* context, const char* name);
+    double (*real_time)(void* context); /* monotonic seconds */
 
     /* World queries, valid while a map is loaded (they return fraction 1 / 0 otherwise). */
-    void (*trace)(const float start[3], const float end[3], nqr_trace* out);
+    void (*trace)(void* context, const float start[3], const float end[3], nqr_trace* out);
 
     /* Quake palette (256 RGB triples) and colormap (64 light rows x 256, then 256 more bytes). */
     const uint8_t* palette;
     const uint8_t* colormap;
 
     /* GPU timing: wrap a plugin's own passes; reported by timedemo and -benchjson. */
-    void (*gpu_pass_begin)(const char* pass_name);
-    void (*gpu_pass_end)(void);
+    void (*gpu_pass_begin)(void* context, const char* pass_name);
+    void (*gpu_pass_end)(void* context);
 } nqr_engine;
 
 /* ======================================================================= models */
@@ -286,7 +301,7 @@ typedef struct nqr_camera {
 
 #define NQR_MAX_ENTITY_LIGHTS 4
 
-/* Since 1.4. One local light that matters for an entity (map light entity or dynamic light). */
+/* One local light that matters for an entity (map light entity or dynamic light). */
 typedef struct nqr_light_source {
     uint32_t size;
     float position[3]; /* world */
@@ -302,15 +317,15 @@ typedef struct nqr_entity_light {
     float direction[3]; /* unit vector in world space pointing from the entity toward it */
     float color[3];     /* tint of the lightmap under the entity (1,1,1 for white light) */
     /* Irradiance arriving from +X, -X, +Y, -Y, +Z, -Z (world), RGB, ambient's scale: Valve's
-     * ambient cube. Since 1.4 baked at level load from the light the map's surfaces send back
+     * ambient cube, baked at level load from the light the map's surfaces send back
      * (lightmap times texture colour, sky, cosine-weighted over 162 directions per sample
      * point, light styles at normal), blended between nearby samples, plus dynamic lights. */
     float ambient_cube[6][3];
-    /* Since 1.4: the strongest lights at the entity, strongest first; each fades in and out
-     * over time, so nothing pops as lights enter or leave the set. Walk the array with nqr_at
-     * (stride lights[0].size), and only when this struct's size covers it. */
+    /* The strongest lights at the entity (at most NQR_MAX_ENTITY_LIGHTS), strongest first;
+     * each fades in and out over time, so nothing pops as lights enter or leave the set. Walk
+     * the array with nqr_at (stride lights->size). */
     uint32_t num_lights;
-    nqr_light_source lights[NQR_MAX_ENTITY_LIGHTS];
+    const nqr_light_source* lights;
 } nqr_entity_light;
 
 enum nqr_entity_flags {
@@ -318,12 +333,12 @@ enum nqr_entity_flags {
     NQR_ENTITY_STATIC = 1u << 1,    /* from svc_spawnstatic */
     NQR_ENTITY_TEMP = 1u << 2,      /* beams, explosions added by the client */
     NQR_ENTITY_FULLBRIGHT = 1u << 3, /* ignore lighting (EF_BRIGHTFIELD, muzzle flash…) */
-    /* Since 1.1: in the PVS but its bounding sphere, or for an alias model the box of this
-     * frame's two poses (since 1.2 also its blended vertices), is outside the view frustum, so
-     * nothing of the model itself is on screen. Listed anyway for effects that reach into the view (shadows, reflections);
-     * drawers of the model skip it (nprlib's drawers do). */
+    /* In the PVS but its bounding sphere, or for an alias model the box of this frame's two
+     * poses or its blended vertices, is outside the view frustum, so nothing of the model
+     * itself is on screen. Listed anyway for effects that reach into the view (shadows,
+     * reflections); drawers of the model skip it (nprlib's drawers do). */
     NQR_ENTITY_OUTSIDE_VIEW = 1u << 4,
-    /* Since 1.2: inside the frustum, but at every pixel centre of the camera's viewport it
+    /* Inside the frustum, but at every pixel centre of the camera's viewport it
      * could cover, one of the frame's visible world surfaces (an opaque one: not sky, liquid or
      * fence) lies nearer than any part of the model, so once those are drawn with depth writes
      * the depth test rejects all of its fragments. Listed, like OUTSIDE_VIEW, for effects that
@@ -353,7 +368,7 @@ typedef struct nqr_entity {
     uint8_t pad0;
     float alpha; /* 1 = opaque */
     uint32_t effects;
-    nqr_entity_light light;
+    const nqr_entity_light* light; /* never NULL */
 } nqr_entity;
 
 typedef struct nqr_dlight {
@@ -374,8 +389,8 @@ typedef struct nqr_particle {
 /* Colour, depth and normals of the rendered scene, for post-processing plugins. GL texture
  * names of the engine's scene framebuffer; normals are view-space, encoded n * 0.5 + 0.5.
  * The normal's alpha is the share of the pixel's colour that ambient obscurance darkens: 1 for
- * all of it, 0 for what is not solid (sky, liquids); since 1.5 a style that keeps ambient light
- * apart writes ambient / total there (by luminance), so obscurance shades only that part. */
+ * all of it, 0 for what is not solid (sky, liquids); a style that keeps ambient light apart
+ * writes ambient / total there (by luminance), so obscurance shades only that part. */
 typedef struct nqr_gbuffer {
     uint32_t size;
     uint32_t framebuffer;
@@ -387,8 +402,7 @@ typedef struct nqr_gbuffer {
 
 enum nqr_frame_flags {
     NQR_FRAME_UNDERWATER = 1u << 0,
-    NQR_FRAME_INTERMISSION = 1u << 1,
-    NQR_FRAME_WRITE_NORMALS = 1u << 2 /* scene shaders also write normals to location 1 */
+    NQR_FRAME_INTERMISSION = 1u << 1
 };
 
 typedef struct nqr_frame {
@@ -398,7 +412,7 @@ typedef struct nqr_frame {
     double real_time; /* wall-clock seconds */
     float frame_time;
     uint32_t flags;
-    nqr_camera camera;
+    const nqr_camera* camera; /* never NULL */
 
     nqr_model_id world; /* 0 when no map is loaded (showroom without world) */
     /* World surfaces that survived PVS and frustum culling this frame, grouped by texture: the
@@ -423,9 +437,7 @@ typedef struct nqr_frame {
     const nqr_particle* particles; /* array; stride particles->size */
     uint32_t num_particles;
 
-    float blend[4]; /* full-screen tint (damage, powerups, liquids), premultiplied by alpha */
-
-    /* Since 1.1. The view frustum's side planes (left, right, bottom, top) in world space as
+    /* The view frustum's side planes (left, right, bottom, top) in world space as
      * (nx, ny, nz, d), unit normals pointing inward: p is inside a plane when n.p >= d. (Quake
      * culls nothing by distance, so there are no near and far planes.) */
     float view_planes[4][4];
@@ -439,7 +451,7 @@ enum nqr_renderer_wants {
     NQR_WANTS_GBUFFER = 1u << 0
 };
 
-/* Since 1.3. One line of the style's page in the engine's Options menu: a cvar the plugin
+/* One line of the style's page in the engine's Options menu: a cvar the plugin
  * registered, shown with a label and changed with the arrow keys. */
 enum nqr_menu_setting_kind {
     NQR_MENU_TOGGLE = 0, /* 0 / 1, shown as off / on */
@@ -464,27 +476,28 @@ typedef struct nqr_renderer {
     const char* description; /* one line for r_plugins */
     uint32_t wants;          /* nqr_renderer_wants */
 
-    /* Required. init: GL is current; register cvars, build shaders. 0 = ready; otherwise log
-     * why and return non-zero: the engine keeps the previous renderer. shutdown: release every
-     * GL object and allocation; the library is unloaded right after. */
-    int (*init)(const nqr_engine* engine);
-    void (*shutdown)(void);
+    /* Required. init: GL is current; register cvars, build shaders; return the new instance
+     * (any non-NULL pointer: the renderer's context, passed back as `self`), or log why and
+     * return NULL: the engine keeps the previous renderer. shutdown: release every GL object
+     * and the instance; the library may be unloaded right after. */
+    void* (*init)(const nqr_engine* engine);
+    void (*shutdown)(void* self);
 
     /* Models: called for every loaded model after init and whenever a map loads models. */
-    void (*register_model)(const nqr_model* model);
-    void (*release_model)(nqr_model_id id);
+    void (*register_model)(void* self, const nqr_model* model);
+    void (*release_model)(void* self, nqr_model_id id);
 
     /* Per frame, in this order; any of these may be NULL. */
-    void (*begin_frame)(const nqr_frame* frame);
-    void (*draw_world)(const nqr_frame* frame);
-    void (*draw_brush_entities)(const nqr_frame* frame);
-    void (*draw_alias_entities)(const nqr_frame* frame);
-    void (*draw_sprite_entities)(const nqr_frame* frame);
-    void (*draw_particles)(const nqr_frame* frame);
-    void (*post_process)(const nqr_frame* frame, const nqr_gbuffer* gbuffer);
-    void (*end_frame)(const nqr_frame* frame);
+    void (*begin_frame)(void* self, const nqr_frame* frame);
+    void (*draw_world)(void* self, const nqr_frame* frame);
+    void (*draw_brush_entities)(void* self, const nqr_frame* frame);
+    void (*draw_alias_entities)(void* self, const nqr_frame* frame);
+    void (*draw_sprite_entities)(void* self, const nqr_frame* frame);
+    void (*draw_particles)(void* self, const nqr_frame* frame);
+    void (*post_process)(void* self, const nqr_frame* frame, const nqr_gbuffer* gbuffer);
+    void (*end_frame)(void* self, const nqr_frame* frame);
 
-    /* Since 1.3 (may be NULL / 0). The style's main settings, in the order the menu lists
+    /* May be NULL / 0. The style's main settings, in the order the menu lists
      * them; the array and its strings stay valid while the library is loaded. */
     const nqr_menu_setting* menu_settings; /* array; stride menu_settings->size */
     uint32_t num_menu_settings;

@@ -15,6 +15,7 @@
 #include "nqr_renderer.h"
 #include "plugin/engine_services.h"
 #include "plugin/plugin_library.h"
+#include "plugin/service_table.h"
 
 namespace nq {
 
@@ -25,36 +26,38 @@ struct PluginInfo {
 
 class PluginHost {
 public:
-    // `plugin_dir` holds nqr_<name>.so files. Only one PluginHost may exist at a time: the C
-    // services table has no context pointer, so its trampolines reach this object statically.
-    PluginHost(EngineServices& services, std::string plugin_dir);
-    ~PluginHost();
-    PluginHost(const PluginHost&) = delete;
-    PluginHost& operator=(const PluginHost&) = delete;
+  // `plugin_dir` holds nqr_<name>.so files.
+  PluginHost(EngineServices& services, std::string plugin_dir);
+  ~PluginHost();
+  PluginHost(const PluginHost&) = delete;
+  PluginHost& operator=(const PluginHost&) = delete;
 
-    // Plugins found in the plugin directory, sorted by name.
-    std::vector<PluginInfo> available() const;
+  // Plugins found in the plugin directory, sorted by name.
+  std::vector<PluginInfo> available() const;
 
-    // Loads, initialises and activates `name`; returns "" on success, else why it failed (the
-    // previous renderer, if any, stays active).
-    std::string load(std::string_view name);
-    // Shuts the active plugin down and unloads it.
-    void unload();
+  // Loads, initialises and activates `name`; returns "" on success, else why it failed (the
+  // previous renderer, if any, stays active).
+  std::string load(std::string_view name);
+  // Shuts the active plugin down and unloads it.
+  void unload();
 
-    const nqr_renderer* active() const { return active_ ? &active_->table() : nullptr; }
-    std::string active_name() const { return active_ ? active_->name() : std::string(); }
-    const std::string& plugin_dir() const { return plugin_dir_; }
-    const nqr_engine& engine_table() const { return engine_table_; }
+  // The active plugin's table and the instance its hooks take as `self`.
+  const nqr_renderer* active() const { return active_ ? &active_->table() : nullptr; }
+  void* active_self() const { return active_ ? active_->self() : nullptr; }
+  std::string active_name() const { return active_ ? active_->name() : std::string(); }
+  const std::string& plugin_dir() const { return plugin_dir_; }
+  // The services as the engine itself calls them (its own default drawers).
+  const ServiceTable& engine_services() const { return engine_services_; }
 
-    // The engine's loaded models: registered with the active plugin now and with every plugin
-    // loaded later. Pointers must stay valid until release_model / clear_models.
-    void register_model(const nqr_model* model);
-    void release_model(nqr_model_id id);
-    void clear_models();
-    const std::vector<const nqr_model*>& models() const { return models_; }
+  // The engine's loaded models: registered with the active plugin now and with every plugin
+  // loaded later. Pointers must stay valid until release_model / clear_models.
+  void register_model(const nqr_model* model);
+  void release_model(nqr_model_id id);
+  void clear_models();
+  const std::vector<const nqr_model*>& models() const { return models_; }
 
-    // Number of successful loads so far (for tests and diagnostics).
-    uint32_t load_count() const { return load_count_; }
+  // Number of successful loads so far (for tests and diagnostics).
+  uint32_t load_count() const { return load_count_; }
 
 private:
     std::string plugin_path(std::string_view name) const;
@@ -62,7 +65,7 @@ private:
 
     EngineServices& services_;
     std::string plugin_dir_;
-    nqr_engine engine_table_{};
+    ServiceTable engine_services_;
     std::unique_ptr<PluginLibrary> active_;
     std::vector<const nqr_model*> models_;
     OwnerId next_owner_ = 1;

@@ -123,10 +123,10 @@ LightContributions strongest_lights(const Bsp& bsp, std::span<const LightEntity>
     return best;
 }
 
-void store_lights(const LightContributions& lights, nqr_entity_light& out) {
+void store_lights(const LightContributions& lights, EntityLighting& out) {
     out.num_lights = uint32_t(std::clamp(lights.count, 0, kMaxEntityLights));
     for (int i = 0; i < kMaxEntityLights; ++i) {
-        nqr_light_source& s = out.lights[i];
+        nqr_light_source& s = out.sources[i];
         s = nqr_light_source{};
         s.size = sizeof(nqr_light_source);
         if (i >= lights.count) continue;

@@ -1,5 +1,5 @@
 // The few local lights that matter most at a point: the map's light entities and the frame's
-// dynamic lights, each with the light it brings there (nqr_entity_light.lights, ABI 1.4).
+// dynamic lights, each with the light it brings there (nqr_entity_light.lights).
 //
 // A light entity brings its value at the distance as the light tools compute it (light_level):
 // linear lights (delay 0) brightness - distance * wait, zero beyond; the far-reaching falloffs
@@ -24,6 +24,7 @@
 
 #include "formats/bsp.h"
 #include "nqr_renderer.h"
+#include "render/entity_lighting.h"
 #include "render/light_direction.h"
 #include "render/light_entities.h"
 
@@ -60,6 +61,6 @@ LightContributions strongest_lights(const Bsp& bsp, std::span<const LightEntity>
                                     DlightList dlights, VisibilityCache* traced = nullptr);
 
 // Writes `lights` into out.num_lights / out.lights (sizes included), as they are.
-void store_lights(const LightContributions& lights, nqr_entity_light& out);
+void store_lights(const LightContributions& lights, EntityLighting& out);
 
 }  // namespace nq

@@ -81,7 +81,7 @@ void LightListSmoother::advance(const LightContributions& sampled, float dt) {
     }
 }
 
-void LightListSmoother::write(nqr_entity_light& out) const {
+void LightListSmoother::write(EntityLighting& out) const {
     LightContributions shown;
     for (const Tracked& t : tracked_) {
         if (!t.used) continue;
@@ -93,7 +93,7 @@ void LightListSmoother::write(nqr_entity_light& out) const {
     store_lights(shown, out);
 }
 
-void LightListSmoother::update(const LightContributions& sampled, float dt, nqr_entity_light& out) {
+void LightListSmoother::update(const LightContributions& sampled, float dt, EntityLighting& out) {
     if (!valid_) {
         tracked_ = {};
         for (int i = 0; i < sampled.count && i < kTrackedLights; ++i) {

@@ -1,5 +1,5 @@
 // Per-entity smoothing of the strongest-lights list (entity_lights.h) over time, so no light
-// pops as it enters or leaves an entity's set (nqr_entity_light.lights, ABI 1.4).
+// pops as it enters or leaves an entity's set (nqr_entity_light.lights).
 //
 // The smoother tracks up to kTrackedLights lights by identity: light entities by index,
 // dynamic lights (whose indices change from frame to frame) by position, the same light when
@@ -31,7 +31,7 @@ inline constexpr float kDynamicLightMatch = 64.0f;
 class LightListSmoother {
   public:
     // Blends `sampled` into the state and writes the result to out.num_lights / out.lights.
-    void update(const LightContributions& sampled, float dt, nqr_entity_light& out);
+    void update(const LightContributions& sampled, float dt, EntityLighting& out);
     void reset() { valid_ = false; }
 
   private:
@@ -44,7 +44,7 @@ class LightListSmoother {
     Tracked* find(const LightContribution& light);
     Tracked* free_slot();
     void advance(const LightContributions& sampled, float dt);
-    void write(nqr_entity_light& out) const;
+    void write(EntityLighting& out) const;
 
     std::array<Tracked, kTrackedLights> tracked_{};
     bool valid_ = false;

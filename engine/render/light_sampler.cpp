@@ -55,7 +55,7 @@ void store3(const glm::vec3& v, float out[3]) {
     out[2] = v.z;
 }
 
-void fill_fullbright(nqr_entity_light& out) {
+void fill_fullbright(EntityLighting& out) {
     out.ambient = 1.0f;
     out.directional = 0.0f;
     store3({0, 0, 1}, out.direction);
@@ -86,10 +86,9 @@ AmbientCube LightSampler::ambient_cube(const glm::vec3& point, const glm::vec3& 
 }
 
 void LightSampler::sample(const EntityLightQuery& query, std::span<const float> lightstyles,
-                          DlightList dlights, nqr_entity_light& out,
+                          DlightList dlights, EntityLighting& out,
                           LightContributions* lights) const {
-    out = nqr_entity_light{};
-    out.size = sizeof(nqr_entity_light);
+    out = EntityLighting{};
     if (lights) *lights = LightContributions{};
     if (query.fullbright) {
         fill_fullbright(out);

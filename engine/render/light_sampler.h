@@ -74,7 +74,7 @@ class LightSampler {
     // receives the strongest lights with their identities (for LightListSmoother).
     // Allocation-free.
     void sample(const EntityLightQuery& query, std::span<const float> lightstyles,
-                DlightList dlights, nqr_entity_light& out,
+                DlightList dlights, EntityLighting& out,
                 LightContributions* lights = nullptr) const;
 
     const std::vector<LightEntity>& lights() const { return lights_; }

@@ -39,7 +39,7 @@ glm::vec3 slerp_unit(const glm::vec3& from, const glm::vec3& to, float t) {
     return from * std::cos(turned) + side * std::sin(turned);
 }
 
-void LightSmoother::update(const nqr_entity_light& sampled, float dt, nqr_entity_light& out) {
+void LightSmoother::update(const EntityLighting& sampled, float dt, EntityLighting& out) {
     if (!valid_) {
         state_ = sampled;
         valid_ = true;
@@ -51,11 +51,10 @@ void LightSmoother::update(const nqr_entity_light& sampled, float dt, nqr_entity
         blend3(state_.color, sampled.color, t);
         for (int i = 0; i < 6; ++i) blend3(state_.ambient_cube[i], sampled.ambient_cube[i], t);
     }
-    state_.size = sizeof(nqr_entity_light);
     // The light list is LightListSmoother's: passed through as sampled.
-    nqr_entity_light result = state_;
+    EntityLighting result = state_;
     result.num_lights = sampled.num_lights;
-    std::copy(std::begin(sampled.lights), std::end(sampled.lights), result.lights);
+    result.sources = sampled.sources;
     out = result;
 }
 

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "nqr_renderer.h"
+#include "render/entity_lighting.h"
 
 namespace nq {
 
@@ -24,12 +25,12 @@ class LightSmoother {
     // Blends `sampled` into the state and writes the result to `out` (which may be `sampled`).
     // The first update after construction or reset() takes `sampled` as it is; dt <= 0 keeps
     // the previous result.
-    void update(const nqr_entity_light& sampled, float dt, nqr_entity_light& out);
+    void update(const EntityLighting& sampled, float dt, EntityLighting& out);
     void reset() { valid_ = false; }
     bool valid() const { return valid_; }
 
   private:
-    nqr_entity_light state_{};
+    EntityLighting state_{};
     bool valid_ = false;
 };
 

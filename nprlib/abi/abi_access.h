@@ -1,8 +1,7 @@
 // Safe reading of the size-prefixed ABI structs, for every style and the engine's defaults.
 // One rule: a field is read only when the struct's `size` covers it (an older engine's struct
 // lacks what was appended after it), and arrays are walked with the stride of their first
-// element's `size` (nqr_at). What a struct had in ABI 1.0 is its readable prefix; fields
-// appended since are asked for one by one.
+// element's `size` (nqr_at). ABI 2.0 is the baseline every 2.x engine fills.
 #pragma once
 
 #include <cstddef>
@@ -21,32 +20,26 @@ bool size_covers(const T* item, size_t end) {
     return item != nullptr && item->size >= end;
 }
 
-// Structs unchanged since ABI 1.0 (cameras, models, particles...): every field this build knows.
+// The one readiness policy: a struct is read when its size covers every field this build
+// knows. (A field appended in a later 2.x minor is then asked for on its own with size_covers
+// and NQR_FIELD_END, and a struct without it is still read.)
 template <class T>
 bool has_known_prefix(const T* item) {
     return size_covers(item, sizeof(T));
 }
 
-// A frame: its 1.0 fields, then the view planes appended in 1.1.
+// Structs that point to others are read when those are too.
+inline bool camera_readable(const nqr_camera* camera) {
+    return has_known_prefix(camera);
+}
 inline bool frame_readable(const nqr_frame* frame) {
-    return size_covers(frame, offsetof(nqr_frame, view_planes));
+    return has_known_prefix(frame) && camera_readable(frame->camera);
 }
-inline bool frame_has_view_planes(const nqr_frame& frame) {
-    return size_covers(&frame, NQR_FIELD_END(nqr_frame, view_planes));
+inline bool light_readable(const nqr_entity_light* light) {
+    return has_known_prefix(light) && (light->num_lights == 0 || has_known_prefix(light->lights));
 }
-
-// An entity's light: its 1.0 fields (up to the ambient cube), then the light list of 1.4.
-inline bool light_readable(const nqr_entity_light& light) {
-    return size_covers(&light, NQR_FIELD_END(nqr_entity_light, ambient_cube));
-}
-inline bool light_has_sources(const nqr_entity_light& light) {
-    return size_covers(&light, NQR_FIELD_END(nqr_entity_light, lights));
-}
-
-// An entity: its 1.0 fields, its light up to the ambient cube.
 inline bool entity_readable(const nqr_entity* entity) {
-    return size_covers(entity,
-                       offsetof(nqr_entity, light) + offsetof(nqr_entity_light, num_lights));
+    return has_known_prefix(entity) && light_readable(entity->light);
 }
 
 // An entity whose model can be on screen: readable, not flagged outside the view frustum nor

@@ -34,10 +34,10 @@ class CvarSet {
         size_t i = 0;
         for (const CvarBinding<Settings>& b : bindings_) {
             if (i == MaxCvars) break;
-            cvars_[i++] =
-                engine.cvar_register
-                    ? engine.cvar_register(b.name, b.default_value, NQR_CVAR_ARCHIVE, b.description)
-                    : nullptr;
+            cvars_[i++] = engine.cvar_register
+                              ? engine.cvar_register(engine.context, b.name, b.default_value,
+                                                     NQR_CVAR_ARCHIVE, b.description)
+                              : nullptr;
         }
         first_ = true;
     }

@@ -12,8 +12,8 @@ glm::mat4 mat4_from(const float* column_major) {
 }
 
 bool read_frame_view(const nqr_frame* frame, FrameView& out) {
-    if (!frame_readable(frame) || !has_known_prefix(&frame->camera)) return false;
-    const nqr_camera& camera = frame->camera;
+    if (!frame_readable(frame)) return false;
+    const nqr_camera& camera = *frame->camera;
     out.view_projection = mat4_from(camera.view_projection);
     out.view = mat4_from(camera.view);
     out.eye = glm::make_vec3(camera.origin);
@@ -21,10 +21,8 @@ bool read_frame_view(const nqr_frame* frame, FrameView& out) {
     out.right = glm::make_vec3(camera.right);
     out.up = glm::make_vec3(camera.up);
     out.num_side_planes = 0;
-    if (frame_has_view_planes(*frame)) {
-        for (const float* plane : frame->view_planes) {
-            out.side_planes[out.num_side_planes++] = glm::make_vec4(plane);
-        }
+    for (const float* plane : frame->view_planes) {
+        out.side_planes[out.num_side_planes++] = glm::make_vec4(plane);
     }
     return true;
 }

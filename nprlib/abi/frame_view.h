@@ -17,7 +17,7 @@ struct FrameView {
     glm::mat4 view_projection{1.0f};
     glm::mat4 view{1.0f};
     glm::vec3 eye{0.0f}, forward{1, 0, 0}, right{0, -1, 0}, up{0, 0, 1};
-    // The frustum's side planes (n, d) as the engine hands them; none from an older engine.
+    // The frustum's side planes (n, d) as the engine hands them (none in a default view).
     std::array<glm::vec4, 4> side_planes{};
     int num_side_planes = 0;
 };

@@ -13,7 +13,8 @@
 //
 // One order for every style: cvars are registered and read before the renderer's init (a style
 // chooses resources from them there), and read again at the start of every frame. A renderer
-// with a begin_frame() gets it called after that. Instances follow plugin_instances.h.
+// with a begin_frame() gets it called after that. Each init makes a new instance (renderer and
+// cvars), so one library image can run two at once during a swap; shutdown deletes it.
 #pragma once
 
 #include <cstdint>
@@ -23,7 +24,6 @@
 #include <type_traits>
 
 #include "abi/plugin_entry.h"
-#include "abi/plugin_instances.h"
 #include "nqr_renderer.h"
 
 namespace nq::npr {
@@ -39,6 +39,7 @@ template <class Style>
 class PluginShell {
     using Renderer = typename Style::Renderer;
     using Cvars = typename Style::Cvars;
+    // The plugin's instance: what init returns and every hook gets back as `self`.
     struct Instance {
         Renderer renderer;
         Cvars cvars;
@@ -53,34 +54,40 @@ class PluginShell {
     }
 
   private:
-    static int init(const nqr_engine* engine) {
-        auto instance = std::make_unique<Instance>();
+    static Instance& instance(void* self) { return *static_cast<Instance*>(self); }
+    static Renderer& renderer(void* self) { return instance(self).renderer; }
+
+    static void* init(const nqr_engine* engine) {
+        auto fresh = std::make_unique<Instance>();
         if constexpr (kHasCvars) {
-            instance->cvars.register_all(*engine);
-            instance->cvars.update(instance->renderer.settings);
+            fresh->cvars.register_all(*engine);
+            fresh->cvars.update(fresh->renderer.settings);
         }
         std::string error;
-        if (!instance->renderer.init(engine, &error)) return 1;  // init() logged why
-        instances_.add(std::move(instance));
-        return 0;
+        if (!fresh->renderer.init(engine, &error)) return nullptr;  // init() logged why
+        return fresh.release();
     }
-    static void shutdown() { instances_.retire_oldest(); }
-    static Renderer& renderer() { return instances_.current().renderer; }
+    static void shutdown(void* self) { delete static_cast<Instance*>(self); }
 
-    static void register_model(const nqr_model* m) { renderer().register_model(m); }
-    static void release_model(nqr_model_id id) { renderer().release_model(id); }
-    static void begin_frame(const nqr_frame*) {
-        Instance& instance = instances_.current();
-        if constexpr (kHasCvars) instance.cvars.update(instance.renderer.settings);
-        if constexpr (kRendererBegins) instance.renderer.begin_frame();
+    static void register_model(void* self, const nqr_model* m) { renderer(self).register_model(m); }
+    static void release_model(void* self, nqr_model_id id) { renderer(self).release_model(id); }
+    static void begin_frame(void* self, const nqr_frame*) {
+        Instance& i = instance(self);
+        if constexpr (kHasCvars) i.cvars.update(i.renderer.settings);
+        if constexpr (kRendererBegins) i.renderer.begin_frame();
     }
-    static void draw_world(const nqr_frame* f) { renderer().draw_world(f); }
-    static void draw_brush(const nqr_frame* f) { renderer().draw_brush_entities(f); }
-    static void draw_alias(const nqr_frame* f) { renderer().draw_alias_entities(f); }
-    static void draw_sprites(const nqr_frame* f) { renderer().draw_sprite_entities(f); }
-    static void draw_particles(const nqr_frame* f) { renderer().draw_particles(f); }
+    static void draw_world(void* self, const nqr_frame* f) { renderer(self).draw_world(f); }
+    static void draw_brush(void* self, const nqr_frame* f) {
+        renderer(self).draw_brush_entities(f);
+    }
+    static void draw_alias(void* self, const nqr_frame* f) {
+        renderer(self).draw_alias_entities(f);
+    }
+    static void draw_sprites(void* self, const nqr_frame* f) {
+        renderer(self).draw_sprite_entities(f);
+    }
+    static void draw_particles(void* self, const nqr_frame* f) { renderer(self).draw_particles(f); }
 
-    static inline PluginInstances<Instance> instances_;
     static inline const nqr_renderer kTable = {
         .size = sizeof(nqr_renderer),
         .abi_version = NQR_ABI_VERSION,

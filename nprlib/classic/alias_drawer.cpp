@@ -100,8 +100,8 @@ void AliasDrawer::reset() {
 void AliasDrawer::set_lighting(const nqr_entity& entity) {
     float ambient = 1.0f, directional = 0.0f;
     glm::vec3 direction(0.0f, 0.0f, 1.0f), colour(1.0f);
-    const nqr_entity_light& light = entity.light;
-    if (!(entity.flags & NQR_ENTITY_FULLBRIGHT) && light_readable(light)) {
+    const nqr_entity_light& light = *entity.light;
+    if (!(entity.flags & NQR_ENTITY_FULLBRIGHT) && light_readable(&light)) {
         ambient = light.ambient;
         directional = light.directional;
         direction = glm::make_vec3(light.direction);

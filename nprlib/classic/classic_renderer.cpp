@@ -7,7 +7,7 @@
 namespace nq::npr::classic {
 
 void ClassicRenderer::log(int level, const std::string& text) const {
-    if (engine_ && engine_->log) engine_->log(level, text.c_str());
+    if (engine_ && engine_->log) engine_->log(engine_->context, level, text.c_str());
 }
 
 bool ClassicRenderer::fail(const std::string& message, std::string* error) {

@@ -141,9 +141,8 @@ ShaderLights shader_lights(const nqr_entity& entity, int max_lights) {
     ShaderLights out;
     const int limit = std::clamp(max_lights, 0, int(NQR_MAX_ENTITY_LIGHTS));
     if ((entity.flags & NQR_ENTITY_FULLBRIGHT) != 0) return out;
-    const nqr_entity_light& light = entity.light;
-    if (npr::light_has_sources(light) && light.num_lights > 0 &&
-        light.lights[0].size >= sizeof(nqr_light_source)) {
+    const nqr_entity_light& light = *entity.light;
+    if (npr::light_readable(&light) && light.num_lights > 0) {
         const int listed = std::min<int>(static_cast<int>(light.num_lights), limit);
         for (int i = 0; i < listed; ++i) {
             const nqr_light_source& source = npr::abi_element(light.lights, uint32_t(i));
@@ -214,7 +213,7 @@ EntityShading entity_shading(const nqr_entity& entity, const IllustrativeSetting
     EntityShading out;
     const bool fullbright = (entity.flags & NQR_ENTITY_FULLBRIGHT) != 0;
     for (int face = 0; face < 6; ++face) {
-        out.cube[face] = fullbright ? glm::vec3(1.0f) : vec3_of(entity.light.ambient_cube[face]);
+        out.cube[face] = fullbright ? glm::vec3(1.0f) : vec3_of(entity.light->ambient_cube[face]);
     }
     ShaderLights all = shader_lights(entity, NQR_MAX_ENTITY_LIGHTS);
     const int per_pixel = std::min(all.count, std::clamp(settings.max_lights, 0, all.count));

@@ -21,7 +21,7 @@ constexpr char kDefaultRamp[] = "tf2";
 }  // namespace
 
 void IllustrativeRenderer::log(int level, const std::string& text) const {
-    if (engine_ && engine_->log) engine_->log(level, text.c_str());
+    if (engine_ && engine_->log) engine_->log(engine_->context, level, text.c_str());
 }
 
 bool IllustrativeRenderer::fail(const std::string& message, std::string* error) {
@@ -35,9 +35,9 @@ std::optional<std::vector<uint8_t>> IllustrativeRenderer::read_file(const std::s
     if (!engine_ || !engine_->file_read || !engine_->file_free) return std::nullopt;
     nqr_blob blob{};
     blob.size = sizeof(nqr_blob);
-    if (engine_->file_read(path.c_str(), &blob) != 0) return std::nullopt;
+    if (engine_->file_read(engine_->context, path.c_str(), &blob) != 0) return std::nullopt;
     std::vector<uint8_t> bytes(blob.data, blob.data + blob.length);
-    engine_->file_free(&blob);
+    engine_->file_free(engine_->context, &blob);
     return bytes;
 }
 
@@ -144,9 +144,9 @@ void IllustrativeRenderer::draw_alias_entities(const nqr_frame* frame) {
         if (gather(*frame, frame->alias_entities[i], item)) items_.push_back(item);
     }
     classic::begin_classic_pass();
-    if (engine_->gpu_pass_begin) engine_->gpu_pass_begin("shading");
+    if (engine_->gpu_pass_begin) engine_->gpu_pass_begin(engine_->context, "shading");
     draw_pass(*frame, view, AliasPass::opaque);
-    if (engine_->gpu_pass_end) engine_->gpu_pass_end();
+    if (engine_->gpu_pass_end) engine_->gpu_pass_end(engine_->context);
     draw_pass(*frame, view, AliasPass::translucent);
     glDepthRange(0.0, kViewModelDepthMax);
     draw_pass(*frame, view, AliasPass::view_model);

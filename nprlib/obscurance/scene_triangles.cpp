@@ -72,10 +72,10 @@ void add_alias(const nqr_entity& entity, const nqr_alias_model& alias,
 
 ObscuranceScene collect_scene(const nqr_frame& frame, std::span<const nqr_model* const> models) {
     ObscuranceScene scene;
-    scene.width = uint32_t(std::max(frame.camera.viewport[2], 0));
-    scene.height = uint32_t(std::max(frame.camera.viewport[3], 0));
-    std::copy_n(frame.camera.projection, 16, scene.projection);
-    const glm::mat4 view = glm::make_mat4(frame.camera.view);
+    scene.width = uint32_t(std::max(frame.camera->viewport[2], 0));
+    scene.height = uint32_t(std::max(frame.camera->viewport[3], 0));
+    std::copy_n(frame.camera->projection, 16, scene.projection);
+    const glm::mat4 view = glm::make_mat4(frame.camera->view);
     if (const nqr_model* world = find_model(models, frame.world)) add_brush(*world, view, scene);
     for (uint32_t i = 0; i < frame.num_brush_entities; ++i) {
         const nqr_entity* e = frame.brush_entities[i];

@@ -111,7 +111,7 @@ void AliasFaceDrawer::set_light_direction(const nqr_entity& entity) {
     // An engine too old to sample light, or no dominant light: light from straight above.
     glm::vec3 direction(0.0f, 0.0f, 1.0f);
     if (npr::light_readable(entity.light)) {
-        const glm::vec3 sampled = glm::make_vec3(entity.light.direction);
+        const glm::vec3 sampled = glm::make_vec3(entity.light->direction);
         const float length = glm::length(sampled);
         if (length > 1e-6f) direction = sampled / length;
     }

@@ -46,7 +46,7 @@ ShadowPlane find_shadow_plane(const nqr_engine& engine, const glm::vec3& origin,
     nqr_trace trace{};
     trace.size = sizeof(nqr_trace);
     trace.fraction = 1.0f;
-    engine.trace(glm::value_ptr(origin), glm::value_ptr(end), &trace);
+    engine.trace(engine.context, glm::value_ptr(origin), glm::value_ptr(end), &trace);
     if (trace.start_solid || !(trace.fraction < 1.0f)) return plane;
     const glm::vec3 normal = glm::make_vec3(trace.plane_normal);
     const float length = glm::length(normal);

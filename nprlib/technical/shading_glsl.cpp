@@ -101,10 +101,10 @@ void set_entity_light_uniforms(gl::Program& program, const nqr_entity& entity) {
     const glm::vec3 id = object_id_color(entity.number);
     glUniform3f(program.location("u_object_color"), id.x, id.y, id.z);
     const bool fullbright = (entity.flags & NQR_ENTITY_FULLBRIGHT) != 0;
-    glUniform1f(program.location("u_ambient"), fullbright ? 1.0f : entity.light.ambient);
-    glUniform1f(program.location("u_directional"), fullbright ? 0.0f : entity.light.directional);
-    glUniform3f(program.location("u_light_color"), entity.light.color[0], entity.light.color[1],
-                entity.light.color[2]);
+    glUniform1f(program.location("u_ambient"), fullbright ? 1.0f : entity.light->ambient);
+    glUniform1f(program.location("u_directional"), fullbright ? 0.0f : entity.light->directional);
+    glUniform3f(program.location("u_light_color"), entity.light->color[0], entity.light->color[1],
+                entity.light->color[2]);
 }
 
 }  // namespace nq::npr::technical

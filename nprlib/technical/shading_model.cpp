@@ -31,8 +31,8 @@ glm::vec3 metal_tone(const ShadingSettings& s, glm::vec3 kd, float n_dot_l, floa
 ToneLight tone_light(const nqr_entity& entity) {
     ToneLight out;
     out.object_color = object_id_color(entity.number);
-    const nqr_entity_light& light = entity.light;
-    if (!npr::light_readable(light)) return out;
+    const nqr_entity_light& light = *entity.light;
+    if (!npr::light_readable(&light)) return out;
     const glm::vec3 direction = glm::make_vec3(light.direction);
     const float length = glm::length(direction);
     if (length > 1e-6f) out.direction = direction / length;

@@ -27,10 +27,10 @@ bool wants_alias_edges(const EdgeSettings& settings) {
 
 EdgeFrameUniforms edge_frame_uniforms(const nqr_frame& frame) {
     EdgeFrameUniforms out;
-    out.projection = npr::mat4_from(frame.camera.projection);
-    out.viewport = {static_cast<float>(frame.camera.viewport[2]),
-                    static_cast<float>(frame.camera.viewport[3])};
-    out.z_near = frame.camera.z_near;
+    out.projection = npr::mat4_from(frame.camera->projection);
+    out.viewport = {static_cast<float>(frame.camera->viewport[2]),
+                    static_cast<float>(frame.camera->viewport[3])};
+    out.z_near = frame.camera->z_near;
     return out;
 }
 
@@ -39,7 +39,7 @@ constexpr double kViewModelDepthMax = 0.3;  // GLQuake's depth-range hack, as cl
 }  // namespace
 
 void TechnicalRenderer::log(int level, const std::string& text) const {
-    if (engine_ && engine_->log) engine_->log(level, text.c_str());
+    if (engine_ && engine_->log) engine_->log(engine_->context, level, text.c_str());
 }
 
 bool TechnicalRenderer::fail(const std::string& message, std::string* error) {
@@ -88,11 +88,11 @@ void TechnicalRenderer::release_model(nqr_model_id id) {
 }
 
 void TechnicalRenderer::pass_begin(const char* name) const {
-    if (engine_->gpu_pass_begin) engine_->gpu_pass_begin(name);
+    if (engine_->gpu_pass_begin) engine_->gpu_pass_begin(engine_->context, name);
 }
 
 void TechnicalRenderer::pass_end() const {
-    if (engine_->gpu_pass_end) engine_->gpu_pass_end();
+    if (engine_->gpu_pass_end) engine_->gpu_pass_end(engine_->context);
 }
 
 // ------------------------------------------------------------------ brush geometry
@@ -255,7 +255,7 @@ ShadowPasses TechnicalRenderer::shadow_passes(const AliasItem& item,
     if (fade <= 0.0f) return none;
     const ShadowPlane plane = find_shadow_plane(*engine_, origin, settings.shadows.max_drop);
     if (!plane.found) return none;
-    ShadowPasses passes = build_shadow_passes(plane, glm::make_vec3(item.entity->light.direction),
+    ShadowPasses passes = build_shadow_passes(plane, glm::make_vec3(item.entity->light->direction),
                                               origin, settings.shadows, item.radius);
     if (!entity_in_view(item.entity) &&
         npr::sphere_outside_view(view, passes.bounds_centre, passes.bounds_radius)) {

@@ -1,24 +1,43 @@
 /* The null renderer: every draw hook is present and does nothing, so the engine draws nothing
  * (a NULL hook would make the engine draw that part with its defaults). It touches no GL, which
  * makes it the renderer for engine tests, for timing the engine without drawing, and the
- * smallest example of the plugin ABI — written in C to show the boundary needs no C++. */
+ * smallest example of the plugin ABI — written in C to show the boundary needs no C++. Its
+ * state lives in its instance (init returns it, every hook gets it back as `self`). */
+#include <stdlib.h>
+
 #include "nqr_renderer.h"
 
-static const nqr_engine* g_engine;
-static unsigned g_models;
+typedef struct null_renderer {
+    const nqr_engine* engine;
+    unsigned models;
+} null_renderer;
 
-static int null_init(const nqr_engine* engine) {
-    g_engine = engine;
-    g_models = 0;
-    engine->log(NQR_LOG_INFO, "null renderer: nothing will be drawn");
-    return 0;
+static void* null_init(const nqr_engine* engine) {
+    null_renderer* self = (null_renderer*)calloc(1, sizeof(null_renderer));
+    if (!self) return NULL;
+    self->engine = engine;
+    engine->log(engine->context, NQR_LOG_INFO, "null renderer: nothing will be drawn");
+    return self;
 }
 
-static void null_shutdown(void) { g_engine = 0; }
-static void null_register_model(const nqr_model* model) { (void)model; ++g_models; }
-static void null_release_model(nqr_model_id id) { (void)id; --g_models; }
-static void null_frame(const nqr_frame* frame) { (void)frame; }
-static void null_post(const nqr_frame* frame, const nqr_gbuffer* g) { (void)frame; (void)g; }
+static void null_shutdown(void* self) { free(self); }
+static void null_register_model(void* self, const nqr_model* model) {
+    (void)model;
+    ++((null_renderer*)self)->models;
+}
+static void null_release_model(void* self, nqr_model_id id) {
+    (void)id;
+    --((null_renderer*)self)->models;
+}
+static void null_frame(void* self, const nqr_frame* frame) {
+    (void)self;
+    (void)frame;
+}
+static void null_post(void* self, const nqr_frame* frame, const nqr_gbuffer* g) {
+    (void)self;
+    (void)frame;
+    (void)g;
+}
 
 static const nqr_renderer g_table = {
     sizeof(nqr_renderer),

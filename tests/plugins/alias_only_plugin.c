@@ -6,19 +6,26 @@
  * alias_only), so the plugin-host tests' listing of the misbehaving plugins stays as it is. */
 #include "nqr_renderer.h"
 
-static int alias_only_init(const nqr_engine* engine) {
-    engine->log(NQR_LOG_INFO, "alias_only renderer: only alias models will be drawn");
-    return 0;
+/* It keeps no state: its instance is the engine's table, which outlives it. */
+static void* alias_only_init(const nqr_engine* engine) {
+    engine->log(engine->context, NQR_LOG_INFO,
+                "alias_only renderer: only alias models will be drawn");
+    return (void*)engine;
 }
 
-static void alias_only_shutdown(void) {}
-static void alias_only_register(const nqr_model* model) {
+static void alias_only_shutdown(void* self) {
+    (void)self;
+}
+static void alias_only_register(void* self, const nqr_model* model) {
+    (void)self;
     (void)model;
 }
-static void alias_only_release(nqr_model_id id) {
+static void alias_only_release(void* self, nqr_model_id id) {
+    (void)self;
     (void)id;
 }
-static void draw_nothing(const nqr_frame* frame) {
+static void draw_nothing(void* self, const nqr_frame* frame) {
+    (void)self;
     (void)frame;
 }
 

@@ -33,7 +33,8 @@ struct FakeCvars {
 
 inline FakeCvars* g_fake = nullptr;
 
-inline const nqr_cvar* fake_register(const char* name, const char* default_value, uint32_t, const char*) {
+inline const nqr_cvar* fake_register(void*, const char* name, const char* default_value, uint32_t,
+                                     const char*) {
     if (!g_fake->cvars.count(name)) g_fake->set(name, default_value);
     return &g_fake->cvars[name];
 }

@@ -275,7 +275,7 @@ struct TestEngine {
     TestEngine() {
         engine.size = sizeof(nqr_engine);
         engine.abi_version = NQR_ABI_VERSION;
-        engine.log = [](int, const char* text) { captured_log().push_back(text); };
+        engine.log = [](void*, int, const char* text) { captured_log().push_back(text); };
         engine.palette = palette.data();
         engine.colormap = colormap.data();
     }
@@ -334,6 +334,7 @@ struct TestFrame {
     std::vector<uint32_t> visible;
     bool use_visible_list = false;
     nqr_frame frame{};
+    nqr_camera camera{};  // frame.camera points here
 
     TestFrame() { lightstyles.fill(1.0f); }
 
@@ -342,7 +343,8 @@ struct TestFrame {
         frame.size = sizeof(nqr_frame);
         frame.number = ++number_;
         frame.time = time;
-        frame.camera = camera;
+        this->camera = camera;
+        frame.camera = &this->camera;
         frame.world = world;
         frame.visible_surfaces = use_visible_list ? visible.data() : nullptr;
         frame.num_visible_surfaces = static_cast<uint32_t>(visible.size());
@@ -382,6 +384,33 @@ inline nqr_particle make_particle(glm::vec3 origin, uint8_t colour_index, float 
     return particle;
 }
 
+// Normal white light from straight above, no light list: what make_entity's entities point to.
+// A test that changes an entity's light points it at a make_light() of its own.
+inline nqr_entity_light make_light() {
+    nqr_entity_light light{};
+    light.size = sizeof(nqr_entity_light);
+    light.ambient = 1.0f;
+    light.direction[2] = 1.0f;
+    light.color[0] = light.color[1] = light.color[2] = 1.0f;
+    return light;
+}
+inline const nqr_entity_light& default_light() {
+    static const nqr_entity_light light = make_light();
+    return light;
+}
+
+// An entity's light with room for its light list, for tests that set one.
+struct TestLight {
+    nqr_entity_light light = make_light();
+    std::array<nqr_light_source, NQR_MAX_ENTITY_LIGHTS> sources{};
+    TestLight() {
+        light.lights = sources.data();
+        for (nqr_light_source& s : sources) s.size = sizeof(nqr_light_source);
+    }
+    TestLight(const TestLight&) = delete;
+    TestLight& operator=(const TestLight&) = delete;
+};
+
 inline nqr_entity make_entity(nqr_model_id model, glm::mat4 model_matrix = glm::mat4(1.0f)) {
     nqr_entity entity{};
     entity.size = sizeof(nqr_entity);
@@ -391,10 +420,7 @@ inline nqr_entity make_entity(nqr_model_id model, glm::mat4 model_matrix = glm::
     std::copy_n(glm::value_ptr(model_matrix), 16, entity.model_matrix);
     const glm::vec3 origin(model_matrix[3]);
     std::copy_n(glm::value_ptr(origin), 3, entity.origin);
-    entity.light.size = sizeof(nqr_entity_light);
-    entity.light.ambient = 1.0f;
-    entity.light.direction[2] = 1.0f;
-    entity.light.color[0] = entity.light.color[1] = entity.light.color[2] = 1.0f;
+    entity.light = &default_light();
     return entity;
 }
 

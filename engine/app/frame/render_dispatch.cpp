@@ -15,7 +15,7 @@ namespace nq {
 
 namespace {
 
-using Hook = void (*)(const nqr_frame*);
+using Hook = void (*)(void* self, const nqr_frame*);
 using DefaultHook = void (npr::classic::ClassicRenderer::*)(const nqr_frame*);
 
 struct Pass {
@@ -86,8 +86,9 @@ void RenderDispatch::sync_defaults() {
     if (defaults_) return;
     auto fresh = std::make_unique<npr::classic::ClassicRenderer>();
     std::string error;
-    if (!fresh->init(&plugins_.engine_table(), &error)) {
-        plugins_.engine_table().log(NQR_LOG_ERROR, ("default renderer failed: " + error).c_str());
+    if (!fresh->init(&plugins_.engine_services().table(), &error)) {
+        plugins_.engine_services().log(NQR_LOG_ERROR,
+                                       ("default renderer failed: " + error).c_str());
         return;
     }
     for (const nqr_model* m : plugins_.models()) fresh->register_model(m);
@@ -114,9 +115,9 @@ void RenderDispatch::draw(const nqr_frame& frame) {
     const bool obscurance = obscurance_settings_.enabled && !obscurance_failed_;
     const bool wants_gbuffer = (r && (r->wants & NQR_WANTS_GBUFFER)) || obscurance;
     const bool use_gbuffer =
-        wants_gbuffer && gbuffer_.prepare(frame.camera.viewport[2], frame.camera.viewport[3]);
+        wants_gbuffer && gbuffer_.prepare(frame.camera->viewport[2], frame.camera->viewport[3]);
     if (use_gbuffer) gbuffer_.bind_and_clear();
-    if (r && r->begin_frame) r->begin_frame(&frame);
+    if (r && r->begin_frame) r->begin_frame(plugins_.active_self(), &frame);
     draw_scene(r, frame);
     if (use_gbuffer) {
         // Without a plugin post-process the obscurance composite writes the window itself,
@@ -128,7 +129,7 @@ void RenderDispatch::draw(const nqr_frame& frame) {
         else
             post_process(r, frame);
     }
-    if (r && r->end_frame) r->end_frame(&frame);
+    if (r && r->end_frame) r->end_frame(plugins_.active_self(), &frame);
     if (trace_) trace_->lap(TraceStage::Post);
     if (!dump_path_.empty()) dump_scene(frame);
 }
@@ -151,7 +152,7 @@ void RenderDispatch::draw_scene(const nqr_renderer* r, const nqr_frame& frame) {
         if (!hook && !defaults_) continue;
         if (timers_) timers_->begin(p.pass);
         if (hook) {
-            hook(&frame);
+            hook(plugins_.active_self(), &frame);
         } else {
             ((*defaults_).*p.fallback)(&frame);
         }
@@ -162,7 +163,7 @@ void RenderDispatch::draw_scene(const nqr_renderer* r, const nqr_frame& frame) {
 
 void RenderDispatch::bind_window(const nqr_frame& frame) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    const int* vp = frame.camera.viewport;
+    const int* vp = frame.camera->viewport;
     glViewport(vp[0], vp[1], vp[2], vp[3]);
 }
 
@@ -171,10 +172,10 @@ void RenderDispatch::bind_window(const nqr_frame& frame) {
 void RenderDispatch::post_process(const nqr_renderer* r, const nqr_frame& frame) {
     const nqr_gbuffer& g = gbuffer_.gbuffer();
     bind_window(frame);
-    const int* vp = frame.camera.viewport;
+    const int* vp = frame.camera->viewport;
     if (timers_) timers_->begin(GpuPass::Post);
     if (r && r->post_process) {
-        r->post_process(&frame, &g);
+        r->post_process(plugins_.active_self(), &frame, &g);
     } else {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, g.framebuffer);
         glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -197,22 +198,22 @@ bool RenderDispatch::apply_obscurance(const nqr_frame& frame, bool onto_window) 
     scene.normal_texture = g.normal_texture;
     scene.width = g.width;
     scene.height = g.height;
-    std::copy_n(frame.camera.projection, 16, scene.projection);
+    std::copy_n(frame.camera->projection, 16, scene.projection);
     npr::obscurance::CompositeTarget window;
-    std::copy_n(frame.camera.viewport, 4, window.viewport);
+    std::copy_n(frame.camera->viewport, 4, window.viewport);
     if (timers_) timers_->begin("obscurance");
     std::string error;
     const bool applied =
         obscurance_.apply(scene, obscurance_settings_, error, onto_window ? &window : nullptr);
     if (!applied) {
         obscurance_failed_ = true;
-        plugins_.engine_table().log(NQR_LOG_ERROR, ("obscurance off: " + error).c_str());
+        plugins_.engine_services().log(NQR_LOG_ERROR, ("obscurance off: " + error).c_str());
     }
     if (timers_) timers_->end();
     if (obscurance_.decisions() != reported_decisions_) {  // vo_compute 2 made its choice
         reported_decisions_ = obscurance_.decisions();
         const std::string choice = npr::obscurance::describe_choice(obscurance_.trial());
-        plugins_.engine_table().log(
+        plugins_.engine_services().log(
             NQR_LOG_INFO, ("obscurance estimate and blur (vo_compute 2): " + choice).c_str());
     }
     return applied && onto_window;

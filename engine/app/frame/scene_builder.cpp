@@ -36,6 +36,7 @@ bool frame_pose_box(const RenderModel& model, const nqr_entity& e,
 
 SceneBuilder::SceneBuilder()
     : entities_(kMaxEntities),
+      lighting_(kMaxEntities),
       particles_(kMaxParticles),
       dlights_(kMaxDlights),
       visible_(kMaxEntities),
@@ -45,7 +46,13 @@ SceneBuilder::SceneBuilder()
     occluding_brushes_.reserve(kMaxEntities);
     pose_points_.resize(1024);  // MDL's usual limit; a larger model grows it once
     frame_.size = sizeof(nqr_frame);
+    camera_.size = sizeof(nqr_camera);
+    frame_.camera = &camera_;
     lightstyles_.fill(1.0f);
+}
+
+EntityLighting& SceneBuilder::lighting(const nqr_entity& entity) {
+    return lighting_[static_cast<size_t>(&entity - entities_.data())];
 }
 
 void SceneBuilder::bind_level(Level& level) {
@@ -80,7 +87,7 @@ const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
     frame_.frame_time = frame_time;
     frame_.flags = (view.underwater ? uint32_t{NQR_FRAME_UNDERWATER} : 0u) |
                    (view.intermission ? uint32_t{NQR_FRAME_INTERMISSION} : 0u);
-    fill_camera(camera, frame_.camera);
+    fill_camera(camera, camera_);
 
     auto styles = client.light_style_values();
     std::copy(styles.begin(), styles.end(), lightstyles_.begin());
@@ -107,7 +114,7 @@ const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
     occluding_brushes_.clear();
     const RenderModel* world = level.models().get(level.model_id(1));
     world_brush_ = world ? world->abi()->brush : nullptr;
-    if (occlusion_) occlusion_->begin_frame(frame_.camera);
+    if (occlusion_) occlusion_->begin_frame(camera_);
     collect_visible_entities(client, view, visible_);
     for (const VisibleEntity& v : visible_.entities()) add_entity(level, client, v);
     flag_occluded_entities();
@@ -116,7 +123,7 @@ const nqr_frame& SceneBuilder::build(Level& level, const ClientState& client,
 }
 
 void SceneBuilder::set_view_frustum() {
-    frustum_ = Frustum::sides_from_view_projection(load_matrix(frame_.camera.view_projection));
+    frustum_ = Frustum::sides_from_view_projection(load_matrix(camera_.view_projection));
     for (size_t i = 0; i < std::size(frame_.view_planes); ++i) {
         const FrustumPlane& plane = frustum_.planes[i];
         frame_.view_planes[i][0] = plane.normal.x;
@@ -245,8 +252,10 @@ void SceneBuilder::add_entity(Level& level, const ClientState& client, const Vis
     }
     if (entity_count_ == entities_.size()) return;
     nqr_entity& e = entities_[entity_count_++];
+    EntityLighting& light = lighting_[entity_count_ - 1];
     export_entity(v, id, e);
-    fill_entity_transform(kind, frame_.camera, e);
+    e.light = &light;
+    fill_entity_transform(kind, camera_, e);
     // Kept, flagged: a plugin may still want it for what reaches into the view (shadows).
     if (!view_model && (frustum_.sphere_outside(origin, radius) || pose_outside_view(*model, e))) {
         e.flags |= NQR_ENTITY_OUTSIDE_VIEW;
@@ -261,8 +270,8 @@ void SceneBuilder::add_entity(Level& level, const ClientState& client, const Vis
         query.minimum_level = minimum_light(v, client.view_entity());
         query.fullbright = (v.flags & kVisibleFullbright) != 0;
         LightContributions strongest;
-        sampler->sample(query, lightstyles_, DlightList{dlights_.data(), frame_.num_dlights},
-                        e.light, &strongest);
+        sampler->sample(query, lightstyles_, DlightList{dlights_.data(), frame_.num_dlights}, light,
+                        &strongest);
         // Smoothed per entity so its light never snaps (e.g. crossing a shadow edge) and its
         // lights fade in and out of its list.
         SmoothedLight& slot = smoothed_[v.number % smoothed_.size()];
@@ -271,8 +280,8 @@ void SceneBuilder::add_entity(Level& level, const ClientState& client, const Vis
             slot.lights.reset();
             slot.model = id;
         }
-        slot.smoother.update(e.light, light_dt_, e.light);
-        slot.lights.update(strongest, light_dt_, e.light);
+        slot.smoother.update(light, light_dt_, light);
+        slot.lights.update(strongest, light_dt_, light);
     }
     by_kind_[kind].push_back(&e);
 }
@@ -285,7 +294,7 @@ nqr_frame& SceneBuilder::begin_custom(const CameraSetup& camera, double time, do
     frame_.real_time = real_time;
     frame_.frame_time = frame_time;
     frame_.flags = 0;
-    fill_camera(camera, frame_.camera);
+    fill_camera(camera, camera_);
     set_view_frustum();
     occlusion_ = nullptr;
     lightstyles_.fill(1.0f);
@@ -300,11 +309,13 @@ nqr_frame& SceneBuilder::begin_custom(const CameraSetup& camera, double time, do
 }
 
 nqr_entity& SceneBuilder::add_custom_entity(uint32_t kind) {
-    nqr_entity& e = entities_[std::min(entity_count_, entities_.size() - 1)];
+    const size_t index = std::min(entity_count_, entities_.size() - 1);
     if (entity_count_ < entities_.size()) ++entity_count_;
+    nqr_entity& e = entities_[index];
     e = nqr_entity{};
     e.size = sizeof(nqr_entity);
-    e.light.size = sizeof(nqr_entity_light);
+    lighting_[index] = EntityLighting{};
+    e.light = &lighting_[index];
     if (kind >= 1 && kind <= NQR_MODEL_SPRITE) by_kind_[kind].push_back(&e);
     return e;
 }
@@ -325,7 +336,7 @@ const nqr_frame& SceneBuilder::build_warm_up(Level& level, const CameraSetup& ca
         frame.num_visible_surfaces =
             level.culler()->cull(outside_any_map, Frustum{}, visible_surfaces_);
     }
-    const glm::mat4 view = load_matrix(frame.camera.view);
+    const glm::mat4 view = load_matrix(camera_.view);
     const glm::vec3 forward = -glm::vec3(view[0][2], view[1][2], view[2][2]);
     const glm::vec3 ahead = camera.origin + forward * 64.0f;
     uint32_t number = kFirstWarmUpNumber;
@@ -340,10 +351,11 @@ const nqr_frame& SceneBuilder::build_warm_up(Level& level, const CameraSetup& ca
         e.origin[2] = ahead.z;
         e.scale = 1;
         e.alpha = 1;
-        fill_entity_transform(kind, frame.camera, e);
-        e.light.ambient = 1;
-        for (auto& face : e.light.ambient_cube) face[0] = face[1] = face[2] = 1;
-        e.light.color[0] = e.light.color[1] = e.light.color[2] = 1;
+        fill_entity_transform(kind, camera_, e);
+        EntityLighting& light = lighting(e);
+        light.ambient = 1;
+        for (auto& face : light.ambient_cube) face[0] = face[1] = face[2] = 1;
+        light.color[0] = light.color[1] = light.color[2] = 1;
     }
     particles_[0] = nqr_particle{sizeof(nqr_particle), {ahead.x, ahead.y, ahead.z}, 15, {}, 1};
     frame.num_particles = 1;

@@ -12,6 +12,7 @@
 #include "client/view.h"
 #include "client/visible_entities.h"
 #include "nqr_renderer.h"
+#include "render/entity_lighting.h"
 #include "render/frustum.h"
 #include "render/light_list_smoother.h"
 #include "render/light_smoother.h"
@@ -48,6 +49,8 @@ class SceneBuilder {
     nqr_frame& begin_custom(const CameraSetup& camera, double time, double real_time,
                             float frame_time);
     nqr_entity& add_custom_entity(uint32_t kind);  // appended and listed under its kind
+    // The lighting an entity of this frame points to (for custom frames to fill).
+    EntityLighting& lighting(const nqr_entity& entity);
     const nqr_frame& finish_custom();
 
     // A frame that draws once everything the level can show: every world surface, one entity
@@ -75,9 +78,11 @@ class SceneBuilder {
     void link_lists();
 
     nqr_frame frame_{};
+    nqr_camera camera_{};  // frame_.camera points here
     std::vector<uint32_t> visible_surfaces_;
     std::array<float, 64> lightstyles_{};
     std::vector<nqr_entity> entities_;
+    std::vector<EntityLighting> lighting_;  // entities_[i].light points to lighting_[i]
     size_t entity_count_ = 0;
     std::array<std::vector<const nqr_entity*>, 4> by_kind_;  // index: nqr_model_kind
     std::vector<nqr_particle> particles_;

@@ -269,27 +269,26 @@ float Showroom::model_yaw(double time) const {
     return static_cast<float>(std::fmod(time * kTurnDegreesPerSecond, 360.0));
 }
 
-void Showroom::fill_light(const std::array<float, 3>& at, nqr_entity_light& out) const {
+void Showroom::fill_light(const std::array<float, 3>& at, EntityLighting& out) const {
     auto light = light_position();
     float d[3] = {light[0] - at[0], light[1] - at[1], light[2] - at[2]};
     float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    out.size = sizeof(nqr_entity_light);
     out.ambient = 0.35f;
     out.directional = 0.9f;
     for (int k = 0; k < 3; ++k) {
         out.direction[k] = d[k] / len;
         out.color[k] = 1.0f;
     }
-    // ABI 1.4's split: the cube holds the even light around, the one lamp is the light list.
+    // The cube holds the even light around, the one lamp is the light list.
     for (auto& face : out.ambient_cube) face[0] = face[1] = face[2] = out.ambient;
     out.num_lights = 1;
-    for (nqr_light_source& source : out.lights) {
+    for (nqr_light_source& source : out.sources) {
         source = nqr_light_source{};
         source.size = sizeof(nqr_light_source);
     }
     for (int k = 0; k < 3; ++k) {
-        out.lights[0].position[k] = light[k];
-        out.lights[0].color[k] = out.directional;
+        out.sources[0].position[k] = light[k];
+        out.sources[0].color[k] = out.directional;
     }
 }
 
@@ -301,8 +300,8 @@ const nqr_frame& Showroom::build(SceneBuilder& scene, const CameraSetup& camera,
     floor.number = 1;
     floor.alpha = 1;
     floor.scale = 1;
-    fill_entity_transform(NQR_MODEL_BRUSH, frame.camera, floor);
-    fill_light({0, 0, 0}, floor.light);
+    fill_entity_transform(NQR_MODEL_BRUSH, *frame.camera, floor);
+    fill_light({0, 0, 0}, scene.lighting(floor));
     for (size_t i = 0; i < alias_.size(); ++i) {
         nqr_entity& e = scene.add_custom_entity(NQR_MODEL_ALIAS);
         e.model = alias_[i]->model.id;
@@ -312,8 +311,8 @@ const nqr_frame& Showroom::build(SceneBuilder& scene, const CameraSetup& camera,
         e.angles[1] = model_yaw(time);
         e.scale = 1;
         e.alpha = 1;
-        fill_entity_transform(NQR_MODEL_ALIAS, frame.camera, e);
-        fill_light(o, e.light);
+        fill_entity_transform(NQR_MODEL_ALIAS, *frame.camera, e);
+        fill_light(o, scene.lighting(e));
     }
     return scene.finish_custom();
 }

@@ -12,6 +12,7 @@
 #include "app/frame/scene_builder.h"
 #include "app/frame/showroom_meshes.h"
 #include "nqr_renderer.h"
+#include "render/entity_lighting.h"
 
 namespace nq {
 
@@ -53,7 +54,7 @@ class Showroom {
     struct AliasStorage;
     struct FloorStorage;
 
-    void fill_light(const std::array<float, 3>& at, nqr_entity_light& out) const;
+    void fill_light(const std::array<float, 3>& at, EntityLighting& out) const;
 
     std::unique_ptr<FloorStorage> floor_;
     std::vector<std::unique_ptr<AliasStorage>> alias_;

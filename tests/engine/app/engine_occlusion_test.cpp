@@ -351,7 +351,7 @@ class GpuDepthReference {
         glFrontFace(GL_CCW);
         glUseProgram(program_);
         glUniformMatrix4fv(glGetUniformLocation(program_, "view_projection"), 1, GL_FALSE,
-                           frame.camera.view_projection);
+                           frame.camera->view_projection);
         draw_triangles();
     }
 

@@ -58,7 +58,7 @@ CullingReport play_and_check(const std::string& demo) {
         const nqr_frame& f =
             scene.build(replay.level(), replay.client(), replay.view(), camera, time, 0.01f);
         const Frustum frustum =
-            Frustum::sides_from_view_projection(load_matrix(f.camera.view_projection));
+            Frustum::sides_from_view_projection(load_matrix(f.camera->view_projection));
         for (uint32_t i = 0; i < f.num_alias_entities; ++i) {
             const nqr_entity& e = *f.alias_entities[i];
             const RenderModel* model = replay.level().models().get(e.model);
@@ -124,7 +124,7 @@ TEST(EngineSceneCulling, WarmUpFrameHoldsEveryWorldSurfaceAndOneEntityPerModel) 
     EXPECT_EQ(f.num_alias_entities, mdl);
     EXPECT_EQ(f.num_sprite_entities, spr);
     const Frustum frustum =
-        Frustum::sides_from_view_projection(load_matrix(f.camera.view_projection));
+        Frustum::sides_from_view_projection(load_matrix(f.camera->view_projection));
     for (uint32_t i = 0; i < f.num_alias_entities; ++i) {
         const nqr_entity& e = *f.alias_entities[i];
         EXPECT_FALSE(frustum.sphere_outside(glm::vec3(e.origin[0], e.origin[1], e.origin[2]), 1));

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -42,7 +43,9 @@ public:
         released.push_back(owner);
     }
     bool read_file(const char*, std::vector<uint8_t>&) override { return false; }
-    void* gl_proc_address(const char*) override { return nullptr; }
+    // Something to hand out: no plugin here draws, but one may look its GL functions up.
+    void* gl_proc_address(const char*) override { return reinterpret_cast<void*>(&no_gl); }
+    static void no_gl() {}
     double real_time() override { return 0; }
     void trace(const float*, const float*, nqr_trace*) override {}
     const uint8_t* palette() override { return palette_bytes; }
@@ -81,9 +84,9 @@ TEST(PluginHost, ListsPluginsInDirectory) {
     PluginHost host(services, test::test_plugin_dir());
     std::vector<std::string> names;
     for (const auto& p : host.available()) names.push_back(p.name);
-    std::vector<std::string> expected = {"test_badabi", "test_failinit", "test_noentry",
-                                         "test_post",   "test_probe",    "test_refuse",
-                                         "test_small"};
+    std::vector<std::string> expected = {"legacy15",     "test_badabi", "test_failinit",
+                                         "test_noentry", "test_post",   "test_probe",
+                                         "test_refuse",  "test_small"};
     EXPECT_EQ(names, expected);
 }
 
@@ -113,7 +116,7 @@ TEST(PluginHost, WrongAbiIsRefusedWithReasonAndKeepsCurrent) {
     ASSERT_EQ(host.load("test_probe"), "");
     std::string why = host.load("test_badabi");
     EXPECT_NE(why.find("ABI version mismatch"), std::string::npos) << why;
-    EXPECT_NE(why.find("0x00020000"), std::string::npos) << why;
+    EXPECT_NE(why.find("0x00030000"), std::string::npos) << why;
     EXPECT_EQ(host.active_name(), "probe");
 }
 
@@ -164,6 +167,40 @@ TEST(PluginHost, FiftySwapsReleaseEverything) {
     EXPECT_EQ(services.released.size(), 49u);  // every replaced plugin's owner was released
     host.unload();
     EXPECT_EQ(probe_counters(test::test_plugin_dir()), nullptr) << "library still loaded";
+}
+
+// A plugin built for ABI 1.5 (tests/plugins/legacy_1_5_plugin.c, from the 1.5 header) loads
+// through the adapter: its context-free services reach the host under its own owner, and swaps
+// between it and a 2.0 plugin go both ways, each releasing what the other registered.
+TEST(PluginHost, LoadsA15PluginAndSwapsWithA20One) {
+    FakeServices services;
+    PluginHost host(services, test::test_plugin_dir());
+    nqr_model a = make_model(1);
+    host.register_model(&a);
+    ASSERT_EQ(host.load("test_probe"), "");
+    ASSERT_EQ(host.load("legacy15"), "");
+    EXPECT_EQ(host.active_name(), "legacy15");
+    ASSERT_NE(host.active(), nullptr);
+    EXPECT_EQ(NQR_ABI_MAJOR(host.active()->abi_version), 1u);
+    EXPECT_NE(host.active_self(), nullptr);
+    ASSERT_FALSE(services.logs.empty());
+    EXPECT_EQ(services.logs.back(), "legacy15: a 1.5 plugin is running");
+    ASSERT_EQ(services.cvars.count("legacy15_marker"), 1u);
+    EXPECT_EQ(services.cvars["legacy15_marker"].integer, 6);
+    ASSERT_EQ(services.commands.count("legacy15_report"), 1u);
+    const OwnerId legacy_owner = services.commands["legacy15_report"].front();
+    EXPECT_EQ(services.commands.count("probe_cmd"), 0u) << "the probe's command left with it";
+    // 1.x hooks the plugin lacks stay NULL (the engine draws those parts), present ones wrap.
+    EXPECT_EQ(host.active()->begin_frame, nullptr);
+    EXPECT_NE(host.active()->draw_world, nullptr);
+    EXPECT_NE(host.active()->draw_alias_entities, nullptr);
+
+    ASSERT_EQ(host.load("test_probe"), "");
+    EXPECT_EQ(services.commands.count("legacy15_report"), 0u);
+    EXPECT_NE(std::find(services.released.begin(), services.released.end(), legacy_owner),
+              services.released.end());
+    ASSERT_EQ(host.load("legacy15"), "") << "and back again";
+    EXPECT_EQ(host.active_name(), "legacy15");
 }
 
 }  // namespace

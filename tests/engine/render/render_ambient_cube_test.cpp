@@ -286,7 +286,7 @@ TEST(RenderAmbientCube, LightSamplerHandsTheFieldsCubeOnWithDynamicLights) {
     const glm::vec3 p(10, 0, 20);
     AmbientCube cube;
     ASSERT_TRUE(field.cube_at(p, cube));
-    nqr_entity_light light;
+    EntityLighting light;
     sampler.sample({p}, normal_lightstyles(), {}, light);
     for (int f = 0; f < 6; ++f) EXPECT_FLOAT_EQ(light.ambient_cube[f][1], cube.faces[f].g / 128);
     EXPECT_GT(light.ambient_cube[0][0], 5 * light.ambient_cube[1][0]);
@@ -369,7 +369,7 @@ TEST(RenderAmbientCube, UnlitMapGivesQuakesFullLevelOnEveryFace) {
         EXPECT_NEAR(face.r, kUnlitSurfaceLevel, 1e-2f);  // every ray meets a wall, all at 255
     }
     LightSampler sampler(room.bsp(), room.data->lighting_rgb(), {}, &field);
-    nqr_entity_light light;
+    EntityLighting light;
     sampler.sample({{0, 0, 0}}, normal_lightstyles(), {}, light);
     for (const auto& face : light.ambient_cube) EXPECT_NEAR(face[2], 255.0f / 128, 1e-3f);
 }

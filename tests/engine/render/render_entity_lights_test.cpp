@@ -33,11 +33,11 @@ struct Room {
         if (!bsp) throw std::runtime_error(bsp.error().to_string());
         data = BrushModelData::build(std::move(*bsp));
     }
-    nqr_entity_light sample(const std::vector<LightEntity>& lights, const glm::vec3& p,
-                            const std::vector<float>& styles = normal_lightstyles(),
-                            DlightList dlights = {}) const {
+    EntityLighting sample(const std::vector<LightEntity>& lights, const glm::vec3& p,
+                          const std::vector<float>& styles = normal_lightstyles(),
+                          DlightList dlights = {}) const {
         LightSampler sampler(data->bsp(), data->lighting_rgb(), lights);
-        nqr_entity_light out;
+        EntityLighting out;
         sampler.sample({p}, styles, dlights, out);
         return out;
     }
@@ -56,7 +56,7 @@ TEST(RenderEntityLights, NearbyLightIsListedWithItsLinearFalloffColour) {
     const Room room;
     const glm::vec3 p(0, 0, 20);
     std::vector<LightEntity> lights = {light_at({0, 0, 100}, 300, {1, 0.5f, 0.25f})};
-    nqr_entity_light out = room.sample(lights, p);
+    EntityLighting out = room.sample(lights, p);
     ASSERT_EQ(out.num_lights, 1u);
     const nqr_light_source& s = out.lights[0];
     EXPECT_EQ(s.size, sizeof(nqr_light_source));
@@ -106,7 +106,7 @@ TEST(RenderEntityLights, AWallBetweenRemovesTheLight) {
     // Above the ceiling (z = 128): unoccluded it would bring 600 - 380 = 220.
     const LightEntity behind = light_at({0, 0, 400}, 600);
     const LightEntity inside = light_at({60, 0, 60}, 200);
-    nqr_entity_light out = room.sample({behind, inside}, p);
+    EntityLighting out = room.sample({behind, inside}, p);
     ASSERT_EQ(out.num_lights, 1u);
     EXPECT_EQ(vec(out.lights[0].position), inside.origin);
     EXPECT_EQ(room.sample({behind}, p).num_lights, 0u);
@@ -130,7 +130,7 @@ TEST(RenderEntityLights, OfSixLightsTheFourStrongestAreKeptStrongestFirst) {
               [](const Expected& a, const Expected& b) { return a.level > b.level; });
     ASSERT_GT(expected[3].level, 0.0f);
     ASSERT_GT(expected[3].level, expected[4].level + 1);
-    const nqr_entity_light out = room.sample(lights, p);
+    const EntityLighting out = room.sample(lights, p);
     ASSERT_EQ(out.num_lights, 4u);
     for (int i = 0; i < 4; ++i) {
         EXPECT_EQ(vec(out.lights[i].position), expected[i].origin) << i;
@@ -142,7 +142,7 @@ TEST(RenderEntityLights, DynamicLightsAreListedWithRadiusMinusDistance) {
     const Room room;
     const glm::vec3 p(0, 0, 0);
     nqr_dlight d{sizeof(nqr_dlight), {50, 0, 0}, 200, {2.0f, 1.0f, 0.0f}};
-    const nqr_entity_light out =
+    const EntityLighting out =
         room.sample({light_at({0, 0, 100}, 140)}, p, normal_lightstyles(), {&d, 1});
     ASSERT_EQ(out.num_lights, 2u);
     EXPECT_EQ(vec(out.lights[0].position), glm::vec3(50, 0, 0));  // 150 against 40
@@ -201,7 +201,7 @@ float listed(const nqr_entity_light& out, const glm::vec3& pos) {
 TEST(RenderLightListSmoother, ALightLeavingTheSetFadesOutOverSeveralFrames) {
     const glm::vec3 a(10, 0, 0), b(0, 10, 0);
     LightListSmoother smoother;
-    nqr_entity_light out{};
+    EntityLighting out{};
     smoother.update(set_of({contribution(1, a, 2.0f), contribution(2, b, 1.0f)}), 0.016f, out);
     ASSERT_EQ(out.num_lights, 2u);
     EXPECT_FLOAT_EQ(listed(out, b), 1.0f) << "the first update passes as sampled";
@@ -225,7 +225,7 @@ TEST(RenderLightListSmoother, ALightLeavingTheSetFadesOutOverSeveralFrames) {
 TEST(RenderLightListSmoother, ALightEnteringFadesInAndOrderIsByFadedStrength) {
     const glm::vec3 a(10, 0, 0), c(0, 0, 10);
     LightListSmoother smoother;
-    nqr_entity_light out{};
+    EntityLighting out{};
     smoother.update(set_of({contribution(1, a, 1.0f)}), 0.016f, out);
     const float dt = 1.0f / 60;
     float previous = 0.0f;
@@ -249,7 +249,7 @@ TEST(RenderLightListSmoother, ALightEnteringFadesInAndOrderIsByFadedStrength) {
 
 TEST(RenderLightListSmoother, DynamicLightsAreFollowedByPositionAndResetRestarts) {
     LightListSmoother smoother;
-    nqr_entity_light out{};
+    EntityLighting out{};
     // A rocket's light moves 8 units a frame and changes index: still the same light.
     smoother.update(set_of({contribution(kDynamicLightKey | 0, {0, 0, 0}, 1.0f)}), 0.016f, out);
     for (int i = 1; i < 20; ++i) {
@@ -270,12 +270,12 @@ TEST(RenderLightListSmoother, DynamicLightsAreFollowedByPositionAndResetRestarts
 }
 
 TEST(RenderLightSmoother, PassesTheLightListThrough) {
-    nqr_entity_light a{}, b{};
+    EntityLighting a{}, b{};
     b.num_lights = 1;
-    b.lights[0].size = sizeof(nqr_light_source);
-    b.lights[0].color[0] = 0.75f;
+    b.sources[0].size = sizeof(nqr_light_source);
+    b.sources[0].color[0] = 0.75f;
     LightSmoother smoother;
-    nqr_entity_light out{};
+    EntityLighting out{};
     smoother.update(a, 0.016f, out);
     smoother.update(b, 0.016f, out);
     EXPECT_EQ(out.num_lights, 1u);
@@ -284,17 +284,23 @@ TEST(RenderLightSmoother, PassesTheLightListThrough) {
 
 // ---- ABI ----------------------------------------------------------------------------------
 
-TEST(RenderEntityLights, Abi14AppendsTheListToTheLight) {
-    // 1.5 changed no layout (only what the G-buffer normal's alpha means).
-    EXPECT_EQ(NQR_ABI_VERSION, (1u << 16) | 5u);
-    // 1.3's nqr_entity_light: size, ambient, directional, direction[3], color[3], cube[6][3].
-    const size_t v13 = 4 * (1 + 1 + 1 + 3 + 3 + 18);
-    EXPECT_EQ(offsetof(nqr_entity_light, num_lights), v13);
-    EXPECT_EQ(offsetof(nqr_entity_light, ambient_cube) + sizeof(float[6][3]), v13);
-    EXPECT_EQ(sizeof(nqr_light_source), 4u * (1 + 3 + 3));
-    EXPECT_EQ(sizeof(nqr_entity_light), v13 + 4 + NQR_MAX_ENTITY_LIGHTS * sizeof(nqr_light_source));
-    // The light is the entity's last member, so the entity grew by the same append.
-    EXPECT_EQ(offsetof(nqr_entity, light) + sizeof(nqr_entity_light), sizeof(nqr_entity));
+// ABI 2.0: the light list is reached through a pointer, and the engine's EntityLighting keeps
+// it pointing at its own sources through every copy (the smoothers copy lights around).
+TEST(RenderEntityLights, EveryCopyOfALightPointsAtItsOwnList) {
+    EntityLighting a;
+    a.num_lights = 2;
+    a.sources[1].position[0] = 42.0f;
+    EXPECT_EQ(a.size, sizeof(nqr_entity_light));
+    EXPECT_EQ(a.lights, a.sources.data());
+    const EntityLighting b = a;
+    EXPECT_EQ(b.lights, b.sources.data());
+    EXPECT_EQ(b.lights[1].position[0], 42.0f);
+    EntityLighting c;
+    c = b;
+    EXPECT_EQ(c.lights, c.sources.data());
+    EXPECT_EQ(c.num_lights, 2u);
+    const nqr_entity_light& abi = c;  // what a frame hands a plugin
+    EXPECT_EQ(abi.lights[1].position[0], 42.0f);
 }
 
 }  // namespace

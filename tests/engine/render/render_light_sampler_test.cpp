@@ -108,7 +108,7 @@ TEST(RenderLightSampler, WithoutAFieldTheCubeIsThePointsOwnLevel) {
     const BspFace& floor = room.face_at(2, -64);
     std::vector<float> styles = normal_lightstyles();
     styles[0] = 0.5f;
-    nqr_entity_light light;
+    EntityLighting light;
     room.sampler.sample({{-80, 96, 0}}, styles, {}, light);
     EXPECT_EQ(light.size, sizeof(nqr_entity_light));
     for (const auto& face : light.ambient_cube) {
@@ -123,7 +123,7 @@ TEST(RenderLightSampler, LevelSplitsIntoAmbientAndDirectionalLikeQuake) {
     for (float scale : {0.25f, 1.0f, 1.6f, 3.0f}) {
         std::vector<float> styles = normal_lightstyles();
         styles[0] = scale;
-        nqr_entity_light light;
+        EntityLighting light;
         room.sampler.sample({{-80, 96, 0}}, styles, {}, light);
         const float l = level * scale;
         const float ambient = std::min(l, 128.0f);
@@ -136,7 +136,7 @@ TEST(RenderLightSampler, LevelSplitsIntoAmbientAndDirectionalLikeQuake) {
 TEST(RenderLightSampler, DirectionPointsAtTheRoomsLightAndColourIsWhiteWithoutLit) {
     BoxRoom room;  // one light at (0, 0, 96)
     for (const glm::vec3 p : {glm::vec3(64, 0, 0), glm::vec3(-100, 80, -40), glm::vec3(0, 0, 0)}) {
-        nqr_entity_light light;
+        EntityLighting light;
         room.sampler.sample({p}, normal_lightstyles(), {}, light);
         const glm::vec3 toward = glm::normalize(glm::vec3(0, 0, 96) - p);
         EXPECT_GT(glm::dot(vec(light.direction), toward), 0.995f) << p.x << " " << p.y;
@@ -147,7 +147,7 @@ TEST(RenderLightSampler, DirectionPointsAtTheRoomsLightAndColourIsWhiteWithoutLi
 
 TEST(RenderLightSampler, DarknessWithMinimumLightAndUnlitMapsAndFullbright) {
     BoxRoom room;
-    nqr_entity_light light;
+    EntityLighting light;
     const glm::vec3 below_the_room(0, 0, -200);  // solid, nothing beneath
     room.sampler.sample({below_the_room}, normal_lightstyles(), {}, light);
     EXPECT_EQ(light.ambient, 0.0f);
@@ -175,7 +175,7 @@ TEST(RenderLightSampler, DynamicLightsAddLevelDirectionAndColour) {
     BoxRoom room;
     std::vector<float> off(64, 0.0f);  // the map's light switched off entirely
     nqr_dlight dlight{sizeof(nqr_dlight), {0, 0, 0}, 100, {1.0f, 0.5f, 0.0f}};
-    nqr_entity_light light;
+    EntityLighting light;
     room.sampler.sample({{50, 0, 0}}, off, {&dlight, 1}, light);
     EXPECT_FLOAT_EQ(light.ambient, 50.0f / 128);  // radius - distance
     EXPECT_GT(glm::dot(vec(light.direction), glm::vec3(-1, 0, 0)), 0.99f);
@@ -234,8 +234,8 @@ struct RealMap {
     bool open(const glm::vec3& p) const {
         return point_contents(data->bsp(), 0, {p.x, p.y, p.z}) != bsp_contents::solid;
     }
-    nqr_entity_light sample(const glm::vec3& p) const {
-        nqr_entity_light light;
+    EntityLighting sample(const glm::vec3& p) const {
+        EntityLighting light;
         sampler->sample({p}, normal_lightstyles(), {}, light);
         return light;
     }
@@ -280,7 +280,7 @@ TEST(RenderLightSampler, UnderTheLightsIsBrighterThanDarkCornersFarFromThem) {
                 trace_down(map.data->bsp(), {l.origin.x, l.origin.y, l.origin.z}, 2048);
             const glm::vec3 p(t.end[0], t.end[1], t.end[2] + 8);
             near_level.push_back(map.sampler->light_point(p, styles).r);
-            const nqr_entity_light light = map.sample(p);
+            const EntityLighting light = map.sample(p);
             near_lit.push_back(light.ambient + light.directional);
         }
         for (const glm::vec3& p : map.entity_origins()) {
@@ -288,7 +288,7 @@ TEST(RenderLightSampler, UnderTheLightsIsBrighterThanDarkCornersFarFromThem) {
                 first_surface_along(map.data->bsp(), p, p + glm::vec3(0, 0, 4096), true);
             if (map.nearest_light(p) < 200.0f || (up && up->sky)) continue;
             dark_level.push_back(map.sampler->light_point(p, styles).r);
-            const nqr_entity_light light = map.sample(p);
+            const EntityLighting light = map.sample(p);
             dark_lit.push_back(light.ambient + light.directional);
         }
         ASSERT_GE(near_level.size(), 5u) << path;
@@ -358,7 +358,7 @@ TEST(RenderLightSampler, DirectionIsContinuousAlongPathsAndSmoothedNeverJumps) {
                 smoother.reset();
                 continue;
             }
-            nqr_entity_light light = map.sample(p);
+            EntityLighting light = map.sample(p);
             const glm::vec3 raw = vec(light.direction);
             smoother.update(light, dt, light);
             const glm::vec3 smoothed = vec(light.direction);
@@ -378,13 +378,13 @@ TEST(RenderLightSampler, DirectionIsContinuousAlongPathsAndSmoothedNeverJumps) {
 }
 
 TEST(RenderLightSmoother, FirstSamplePassesThenConverges) {
-    nqr_entity_light a{}, b{};
+    EntityLighting a{}, b{};
     a.ambient = 0.2f;
     a.direction[2] = 1;
     b.ambient = 1.0f;
     b.direction[0] = 1;
     LightSmoother smoother;
-    nqr_entity_light out;
+    EntityLighting out;
     smoother.update(a, 0.016f, out);
     EXPECT_EQ(out.ambient, 0.2f);
     EXPECT_EQ(out.size, sizeof(nqr_entity_light));
@@ -413,7 +413,7 @@ TEST(RenderLightSampler, SamplingAllocatesNothing) {
     const std::vector<glm::vec3> points = map.entity_origins();
     ASSERT_FALSE(points.empty());
     nqr_dlight dlight{sizeof(nqr_dlight), {0, 0, 0}, 200, {1, 1, 1}};
-    nqr_entity_light light;
+    EntityLighting light;
     LightContributions strongest;
     LightSmoother smoother;
     LightListSmoother list;

@@ -137,35 +137,42 @@ TEST(PluginShell, CvarsComeFirstAndEachFrameReadsThemBeforeTheRendererBegins) {
     g_events.clear();
     const nqr_engine engine = engine_table();
     const nqr_renderer* table = PluginShell<FakeStyle>::table(NQR_ABI_VERSION, &engine);
-    ASSERT_EQ(table->init(&engine), 0);
+    void* self = table->init(&engine);
+    ASSERT_NE(self, nullptr);
     const int id = FakeRenderer<true>::next_id;
     nqr_frame frame{};
-    table->begin_frame(&frame);
-    table->shutdown();
+    table->begin_frame(self, &frame);
+    table->shutdown(self);
     const std::string n = std::to_string(id);
     EXPECT_EQ(g_events, (std::vector<std::string>{"cvars registered", "cvars read",
                                                   "init " + n + " after 1 cvar reads", "cvars read",
                                                   "renderer begins " + n, "gone " + n}));
 }
 
-TEST(PluginShell, ASwapToTheSameStyleKeepsTheNewInstance) {
+// `r_plugin` naming the active style: the engine inits the new instance before the old one
+// shuts down, both from one library image; each hook reaches the instance it is given.
+TEST(PluginShell, TwoInstancesOfOneStyleLiveSideBySide) {
     g_events.clear();
     const nqr_engine engine = engine_table();
     const nqr_renderer* table = PluginShell<FakeStyle>::table(NQR_ABI_VERSION, &engine);
-    ASSERT_EQ(table->init(&engine), 0);
+    void* old_self = table->init(&engine);
+    ASSERT_NE(old_self, nullptr);
     const int old_id = FakeRenderer<true>::next_id;
-    ASSERT_EQ(table->init(&engine), 0);  // the engine inits the new one before the old goes
+    void* new_self = table->init(&engine);
+    ASSERT_NE(new_self, nullptr);
+    ASSERT_NE(new_self, old_self);
     const int new_id = FakeRenderer<true>::next_id;
-    table->shutdown();  // the old one's
     nqr_frame frame{};
-    table->draw_world(&frame);
+    table->draw_world(old_self, &frame);
+    table->shutdown(old_self);
+    table->draw_world(new_self, &frame);
     nqr_model model{};
-    table->register_model(&model);
-    EXPECT_NE(std::find(g_events.begin(), g_events.end(), "gone " + std::to_string(old_id)),
-              g_events.end());
-    EXPECT_EQ(g_events[g_events.size() - 2], "world " + std::to_string(new_id));
-    EXPECT_EQ(g_events.back(), "model " + std::to_string(new_id));
-    table->shutdown();
+    table->register_model(new_self, &model);
+    const std::vector<std::string> tail(g_events.end() - 4, g_events.end());
+    EXPECT_EQ(tail, (std::vector<std::string>{
+                        "world " + std::to_string(old_id), "gone " + std::to_string(old_id),
+                        "world " + std::to_string(new_id), "model " + std::to_string(new_id)}));
+    table->shutdown(new_self);
     EXPECT_EQ(g_events.back(), "gone " + std::to_string(new_id));
 }
 
@@ -173,7 +180,7 @@ TEST(PluginShell, AFailedInitKeepsNoInstance) {
     g_events.clear();
     const nqr_engine engine = engine_table();
     const nqr_renderer* table = PluginShell<FailingStyle>::table(NQR_ABI_VERSION, &engine);
-    EXPECT_NE(table->init(&engine), 0);
+    EXPECT_EQ(table->init(&engine), nullptr);
     const std::string n = std::to_string(FakeRenderer<false>::next_id);
     EXPECT_EQ(g_events.back(), "gone " + n) << "the failed instance is not kept";
 }

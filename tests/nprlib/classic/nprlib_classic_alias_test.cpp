@@ -245,10 +245,12 @@ TEST_F(ClassicAliasTest, LitSideIsBrighterAboveAnAmbientFloor) {
     AliasBuilder b;
     register_box(1, b, 150);
     nqr_entity entity = make_entity(1);
-    entity.light.ambient = 0.5f;
-    entity.light.directional = 1.0f;
-    entity.light.direction[0] = -1.0f;  // the light is on the -X side
-    entity.light.direction[2] = 0.0f;
+    nqr_entity_light light = make_light();
+    light.ambient = 0.5f;
+    light.directional = 1.0f;
+    light.direction[0] = -1.0f;  // the light is on the -X side
+    light.direction[2] = 0.0f;
+    entity.light = &light;
     TestFrame frame;
     frame.alias.push_back(&entity);
     // From (-48, -48, 0) looking at the origin: the -X and -Y faces are visible.
@@ -268,7 +270,9 @@ TEST_F(ClassicAliasTest, LightColourTintsTheModel) {
     AliasBuilder b;
     register_box(1, b, 150);
     nqr_entity entity = make_entity(1);
-    entity.light.color[1] = entity.light.color[2] = 0.5f;
+    nqr_entity_light light = make_light();
+    light.color[1] = light.color[2] = 0.5f;
+    entity.light = &light;
     TestFrame frame;
     frame.alias.push_back(&entity);
     const nqr_camera camera = side_camera();
@@ -284,7 +288,9 @@ TEST_F(ClassicAliasTest, FullbrightSkinPixelsIgnoreLight) {
     register_box(2, plain, colour::kOrange);
     nqr_entity lamp = make_entity(1, glm::translate(glm::mat4(1.0f), {0.0f, 20.0f, 0.0f}));
     nqr_entity crate = make_entity(2, glm::translate(glm::mat4(1.0f), {0.0f, -20.0f, 0.0f}));
-    for (nqr_entity* e : {&lamp, &crate}) e->light.ambient = e->light.directional = 0.0f;
+    nqr_entity_light dark = make_light();
+    dark.ambient = dark.directional = 0.0f;
+    for (nqr_entity* e : {&lamp, &crate}) e->light = &dark;
     TestFrame frame;
     frame.alias = {&lamp, &crate};
     const nqr_camera camera = side_camera();

@@ -32,7 +32,7 @@ std::map<std::string, std::string>& served_files() {
     return files;
 }
 
-int serve_file(const char* path, nqr_blob* out) {
+int serve_file(void*, const char* path, nqr_blob* out) {
     const auto it = served_files().find(path);
     if (it == served_files().end()) return 1;
     out->data = reinterpret_cast<const uint8_t*>(it->second.data());
@@ -40,7 +40,7 @@ int serve_file(const char* path, nqr_blob* out) {
     return 0;
 }
 
-void free_file(nqr_blob*) {}
+void free_file(void*, nqr_blob*) {}
 
 int differing(const std::vector<Rgb>& a, const std::vector<Rgb>& b) {
     int n = 0;
@@ -65,14 +65,16 @@ class IllustrativeRendererTest : public GlSuiteTest<IllustrativeRendererTest> {
         engine_.engine.file_free = free_file;
         scene_.build_models();
         scene_.build_frame();
-        for (nqr_entity* entity : {&scene_.guy, &scene_.weapon}) light(*entity);
+        light(scene_.guy, lights_[0]);
+        light(scene_.weapon, lights_[1]);
     }
 
     // A grey ambient cube and one light above and to the side of the models.
-    static void light(nqr_entity& entity) {
-        for (auto& face : entity.light.ambient_cube) std::fill_n(face, 3, 0.4f);
-        entity.light.num_lights = 1;
-        nqr_light_source& source = entity.light.lights[0];
+    static void light(nqr_entity& entity, TestLight& lit) {
+        entity.light = &lit.light;
+        for (auto& face : lit.light.ambient_cube) std::fill_n(face, 3, 0.4f);
+        lit.light.num_lights = 1;
+        nqr_light_source& source = lit.sources[0];
         source.size = sizeof(nqr_light_source);
         const float position[3] = {100.0f, 30.0f, 120.0f}, colour[3] = {0.9f, 0.8f, 0.7f};
         std::copy_n(position, 3, source.position);
@@ -103,6 +105,7 @@ class IllustrativeRendererTest : public GlSuiteTest<IllustrativeRendererTest> {
     TestEngine engine_;
     IllustrativeRenderer renderer_;
     Scene scene_;
+    std::array<TestLight, 2> lights_;  // the guy's and the weapon's
 };
 
 TEST_F(IllustrativeRendererTest, SteadyStateFramesDoNotAllocate) {

@@ -101,6 +101,7 @@ class IllustrativeShadingTest : public GlSuiteTest<IllustrativeShadingTest> {
         ramp_b_ =
             gl::create_rgba8_texture(&tracker_, 256, 1, ramp_texels(ramp_b), gl::kLinearClamp);
         entity_ = make_entity(1);
+        entity_.light = &lit_.light;
         set_cube(glm::vec3(0.0f));
     }
 
@@ -130,19 +131,19 @@ class IllustrativeShadingTest : public GlSuiteTest<IllustrativeShadingTest> {
         store_cube();
     }
     void store_cube() {
-        for (int f = 0; f < 6; ++f) std::copy_n(&cube_[f].x, 3, entity_.light.ambient_cube[f]);
+        for (int f = 0; f < 6; ++f) std::copy_n(&cube_[f].x, 3, lit_.light.ambient_cube[f]);
     }
 
     // One white light far away in direction `toward` (world), or none.
     void light_from(glm::vec3 toward, glm::vec3 colour = glm::vec3(1.0f)) {
-        entity_.light.num_lights = 1;
-        nqr_light_source& light = entity_.light.lights[0];
+        lit_.light.num_lights = 1;
+        nqr_light_source& light = lit_.sources[0];
         light.size = sizeof(nqr_light_source);
         const glm::vec3 position = glm::normalize(toward) * 1.0e5f;
         std::copy_n(&position.x, 3, light.position);
         std::copy_n(&colour.x, 3, light.color);
     }
-    void no_lights() { entity_.light.num_lights = 0; }
+    void no_lights() { lit_.light.num_lights = 0; }
 
     std::vector<Rgb> draw(IllustrativeSettings settings, ShowTerm show, GLuint warp,
                           GLuint masks = 0) {
@@ -186,6 +187,7 @@ class IllustrativeShadingTest : public GlSuiteTest<IllustrativeShadingTest> {
     gl::Texture ramp_a_, ramp_b_, masks_;
     glm::vec3 cube_[6];
     nqr_entity entity_{};
+    TestLight lit_;  // entity_.light points here
     TestFrame frame_;
 };
 
@@ -257,9 +259,9 @@ TEST_F(IllustrativeShadingTest, LightsPastThePerPixelBudgetJoinTheAmbientCube) {
     set_cube(glm::vec3(0.1f));
     const glm::vec3 kept(-1.0f, 0.0f, 0.0f), folded = glm::normalize(glm::vec3(-1.0f, 1.0f, 1.0f));
     const glm::vec3 colours[2] = {glm::vec3(0.5f), glm::vec3(0.4f, 0.3f, 0.2f)};
-    entity_.light.num_lights = 2;
+    lit_.light.num_lights = 2;
     for (int i = 0; i < 2; ++i) {
-        nqr_light_source& light = entity_.light.lights[i];
+        nqr_light_source& light = lit_.sources[i];
         light.size = sizeof(nqr_light_source);
         const glm::vec3 position = glm::normalize(i == 0 ? kept : folded) * 1.0e5f;
         std::copy_n(&position.x, 3, light.position);
@@ -298,9 +300,9 @@ TEST_F(IllustrativeShadingTest, TheFinalColourIsTheSumOfTheTermsShownAlone) {
     upload_sphere(kGrey);
     set_cube(glm::vec3(0.15f, 0.2f, 0.25f));
     for (int lights = 0; lights <= 4; ++lights) {
-        entity_.light.num_lights = lights;
+        lit_.light.num_lights = lights;
         for (int i = 0; i < lights; ++i) {
-            nqr_light_source& light = entity_.light.lights[i];
+            nqr_light_source& light = lit_.sources[i];
             light.size = sizeof(nqr_light_source);
             const glm::vec3 position = glm::normalize(glm::vec3(-1.0f, i - 1.5f, 0.7f)) * 1.0e5f;
             std::copy_n(&position.x, 3, light.position);

@@ -154,12 +154,13 @@ class SceneTrianglesTest : public ::testing::Test {
 
         view_ = glm::translate(glm::mat4(1.0f), glm::vec3(-5, -6, -300));
         frame_.size = sizeof(frame_);
-        frame_.camera.size = sizeof(frame_.camera);
-        std::copy_n(glm::value_ptr(view_), 16, frame_.camera.view);
+        camera_.size = sizeof(camera_);
+        frame_.camera = &camera_;
+        std::copy_n(glm::value_ptr(view_), 16, camera_.view);
         const glm::mat4 projection = glm::perspective(1.2f, 4.0f / 3.0f, 4.0f, 4096.0f);
-        std::copy_n(glm::value_ptr(projection), 16, frame_.camera.projection);
-        frame_.camera.viewport[2] = 640;
-        frame_.camera.viewport[3] = 480;
+        std::copy_n(glm::value_ptr(projection), 16, camera_.projection);
+        camera_.viewport[2] = 640;
+        camera_.viewport[3] = 480;
         frame_.world = 1;
         frame_.brush_entities = brush_list_.data();
         frame_.num_brush_entities = 1;
@@ -178,7 +179,12 @@ class SceneTrianglesTest : public ::testing::Test {
     static nqr_entity entity(nqr_model_id model, const glm::mat4& placement) {
         nqr_entity e{};
         e.size = sizeof(e);
-        e.light.size = sizeof(e.light);
+        static const nqr_entity_light kLight = [] {
+            nqr_entity_light light{};
+            light.size = sizeof light;
+            return light;
+        }();
+        e.light = &kLight;
         e.model = model;
         std::copy_n(glm::value_ptr(placement), 16, e.model_matrix);
         return e;
@@ -198,6 +204,7 @@ class SceneTrianglesTest : public ::testing::Test {
     std::vector<const nqr_entity*> brush_list_, alias_list_;
     glm::mat4 view_{1.0f};
     nqr_frame frame_{};
+    nqr_camera camera_{};
     std::vector<const nqr_model*> models_;
 };
 
@@ -205,7 +212,7 @@ TEST_F(SceneTrianglesTest, TheFrameComesOutAsItsTrianglesInViewSpace) {
     const ObscuranceScene scene = collect_scene(frame_, models_);
     EXPECT_EQ(scene.width, 640u);
     EXPECT_EQ(scene.height, 480u);
-    EXPECT_EQ(0, std::memcmp(scene.projection, frame_.camera.projection, sizeof scene.projection));
+    EXPECT_EQ(0, std::memcmp(scene.projection, camera_.projection, sizeof scene.projection));
     // The quad fans into two, the sky is one (not solid), the door one, the monster one; the
     // gun none.
     ASSERT_EQ(scene.triangles.size(), 5u);

@@ -25,7 +25,7 @@ using technical::TechnicalRenderer;
 const glm::vec3 kEye(64.0f, 64.0f, 80.0f);  // Scene::draw's camera
 
 // The scene's floor, z = 0, straight under any start point.
-void floor_trace(const float start[3], const float end[3], nqr_trace* out) {
+void floor_trace(void*, const float start[3], const float end[3], nqr_trace* out) {
     const uint32_t size = out->size;
     *out = nqr_trace{};
     out->size = size;
@@ -52,7 +52,8 @@ class TechnicalLifecycleTest : public GlSuiteTest<TechnicalLifecycleTest> {
             const glm::vec3 eye(to_model * glm::vec4(kEye, 1.0f));
             std::copy_n(glm::value_ptr(eye), 3, entity->eye_model);
             const glm::vec3 light = glm::normalize(glm::vec3(0.3f, 0.2f, 1.0f));
-            std::copy_n(glm::value_ptr(light), 3, entity->light.direction);
+            std::copy_n(glm::value_ptr(light), 3, light_.direction);
+            entity->light = &light_;
         }
     }
 
@@ -67,6 +68,7 @@ class TechnicalLifecycleTest : public GlSuiteTest<TechnicalLifecycleTest> {
     TestEngine engine_;
     TechnicalRenderer renderer_;
     Scene scene_;
+    nqr_entity_light light_ = make_light();  // both models' light
 };
 
 TEST_F(TechnicalLifecycleTest, SteadyStateFramesDoNotAllocate) {

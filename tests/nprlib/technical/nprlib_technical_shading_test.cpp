@@ -78,6 +78,7 @@ class TechnicalShadingTest : public GlSuiteTest<TechnicalShadingTest> {
         std::string error;
         ASSERT_TRUE(drawer_.init(&tracker_, error)) << error;
         entity_ = make_entity(1);
+        entity_.light = &light_;
     }
 
     void TearDown() override {
@@ -102,7 +103,7 @@ class TechnicalShadingTest : public GlSuiteTest<TechnicalShadingTest> {
     // Light from direction `toward_light` (world, need not be unit).
     void light_from(glm::vec3 toward_light) {
         const glm::vec3 l = glm::normalize(toward_light);
-        std::copy_n(&l.x, 3, entity_.light.direction);
+        std::copy_n(&l.x, 3, light_.direction);
     }
 
     void draw(const ShadingSettings& settings, const nqr_camera& camera = front_camera()) {
@@ -140,6 +141,7 @@ class TechnicalShadingTest : public GlSuiteTest<TechnicalShadingTest> {
     AliasBuilder builder_;
     std::unique_ptr<classic::AliasModelGpu> gpu_;
     nqr_entity entity_{};
+    nqr_entity_light light_ = make_light();  // entity_.light points here
     TestFrame frame_;
 };
 
@@ -256,10 +258,10 @@ TEST_F(TechnicalShadingTest, MetalShowsBandsAcrossTheHeight) {
 
 TEST_F(TechnicalShadingTest, ClassicModeIsAmbientPlusDirectional) {
     upload_sphere(kGrey);
-    entity_.light.ambient = 0.3f;
-    entity_.light.directional = 0.5f;
-    entity_.light.color[1] = 0.8f;
-    entity_.light.color[2] = 0.6f;
+    light_.ambient = 0.3f;
+    light_.directional = 0.5f;
+    light_.color[1] = 0.8f;
+    light_.color[2] = 0.6f;
     ShadingSettings s;  // splash-back on: classic ignores it
     s.mode = ShadingMode::classic;
     const glm::vec3 kd = palette_rgb(kGrey), tint(1.0f, 0.8f, 0.6f);
@@ -347,10 +349,10 @@ namespace {
 // technical::technical_shade on the CPU gives what the faces show per pixel, mode by mode.
 TEST_F(TechnicalShadingTest, CpuTonesMatchThePixelsOfTheFaces) {
     upload_sphere(kGrey);
-    entity_.light.size = sizeof(nqr_entity_light);
-    entity_.light.ambient = 0.4f;
-    entity_.light.directional = 0.5f;
-    std::fill_n(entity_.light.color, 3, 1.0f);
+    light_.size = sizeof(nqr_entity_light);
+    light_.ambient = 0.4f;
+    light_.directional = 0.5f;
+    std::fill_n(light_.color, 3, 1.0f);
     const glm::vec3 kd = palette_rgb(kGrey);
     for (const ShadingMode mode :
          {ShadingMode::classic, ShadingMode::gooch, ShadingMode::metal, ShadingMode::object_id}) {

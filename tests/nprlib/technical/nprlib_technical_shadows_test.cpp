@@ -187,7 +187,7 @@ FakeWorld& fake_world() {
     return world;
 }
 
-void fake_trace(const float start[3], const float end[3], nqr_trace* out) {
+void fake_trace(void*, const float start[3], const float end[3], nqr_trace* out) {
     FakeWorld& world = fake_world();
     ++world.calls;
     world.start = glm::make_vec3(start);
@@ -436,12 +436,13 @@ class TechnicalShadowsTest : public GlSuiteTest<TechnicalShadowsTest> {
         mesh_ = technical::AliasEdgeMesh::create(*b.build(), error);
         ASSERT_TRUE(mesh_) << error;
         entity_ = make_entity(1, glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, height}));
+        entity_.light = &entity_light_;
         light_from(light_);
     }
 
     void light_from(glm::vec3 toward_light) {
         light_ = glm::normalize(toward_light);
-        std::copy_n(&light_.x, 3, entity_.light.direction);
+        std::copy_n(&light_.x, 3, entity_light_.direction);
     }
 
     npr::FrameView view() {
@@ -572,6 +573,7 @@ class TechnicalShadowsTest : public GlSuiteTest<TechnicalShadowsTest> {
     std::unique_ptr<technical::AliasEdgeMesh> mesh_;
     std::vector<Box> boxes_;
     nqr_entity entity_ = make_entity(1);
+    nqr_entity_light entity_light_ = make_light();                   // entity_.light points here
     glm::vec3 light_ = glm::normalize(glm::vec3(0.6f, 0.0f, 1.0f));  // shadow toward the eye
     TestFrame frame_;
 };
