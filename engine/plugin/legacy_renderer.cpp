@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <cstring>
 
+#include "plugin/table_checks.h"
+
 namespace nq {
 
 namespace {
@@ -108,13 +110,7 @@ LegacyCallScope::~LegacyCallScope() {
 std::string validate_legacy_table(const nqr1_renderer* table) {
     if (!table) return "the plugin refused to load (its entry point returned NULL)";
     if (NQR_ABI_MAJOR(table->abi_version) != 1) return "not a 1.x table";
-    if (table->size < kMinLegacySize) {
-        return "function table too small (" + std::to_string(table->size) + " bytes, need " +
-               std::to_string(kMinLegacySize) + ")";
-    }
-    if (!table->init || !table->shutdown) return "the plugin has no init or shutdown function";
-    if (!table->name || !*table->name) return "the plugin has no name";
-    return {};
+    return check_table_basics(*table, kMinLegacySize);
 }
 
 template <auto Hook>

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <utility>
 
+#include "plugin/table_checks.h"
+
 namespace nq {
 
 namespace {
@@ -32,13 +34,7 @@ std::string validate_renderer_table(const nqr_renderer* table) {
     if (NQR_ABI_MAJOR(table->abi_version) != NQR_ABI_VERSION_MAJOR) {
         return mismatch(table->abi_version);
     }
-    if (table->size < kMinRendererSize) {
-        return "function table too small (" + std::to_string(table->size) + " bytes, need " +
-               std::to_string(kMinRendererSize) + ")";
-    }
-    if (!table->init || !table->shutdown) return "the plugin has no init or shutdown function";
-    if (!table->name || !*table->name) return "the plugin has no name";
-    return {};
+    return check_table_basics(*table, kMinRendererSize);
 }
 
 PluginLibrary::PluginLibrary(void* handle, std::string path, EngineServices& services,

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "formats/mdl.h"
+#include "support/parse_error_checks.h"
 #include "support/raw_bytes.h"
 #include "support/synth_mdl.h"
 #include "support/test_data.h"
@@ -276,10 +277,7 @@ Error parse_error(const test::SynthMdl& synth) {
     return mdl.error();
 }
 
-void expect_error(const Error& e, uint64_t offset, const std::string& text) {
-    EXPECT_EQ(e.offset, offset) << e.to_string();
-    EXPECT_NE(e.message.find(text), std::string::npos) << e.to_string();
-}
+using test::expect_error;
 
 TEST(MdlMalformed, HeaderIdentity) {
     auto bytes = test::write_mdl(test::minimal_mdl());

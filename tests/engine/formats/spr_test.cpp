@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "formats/spr.h"
+#include "support/parse_error_checks.h"
 #include "support/raw_bytes.h"
 #include "support/synth_spr.h"
 #include "support/test_data.h"
@@ -125,10 +126,7 @@ Error parse_error(const test::SynthSpr& synth) {
     return spr.error();
 }
 
-void expect_error(const Error& e, uint64_t offset, const std::string& text) {
-    EXPECT_EQ(e.offset, offset) << e.to_string();
-    EXPECT_NE(e.message.find(text), std::string::npos) << e.to_string();
-}
+using test::expect_error;
 
 TEST(SprMalformed, HeaderIdentity) {
     auto bytes = test::write_spr(test::minimal_spr());

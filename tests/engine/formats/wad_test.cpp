@@ -9,6 +9,7 @@
 #include "formats/lmp.h"
 #include "formats/palette.h"
 #include "formats/wad.h"
+#include "support/parse_error_checks.h"
 #include "support/raw_bytes.h"
 #include "support/synth_wad.h"
 #include "support/test_data.h"
@@ -161,10 +162,7 @@ Error parse_error(const std::vector<uint8_t>& bytes) {
     return wad.error();
 }
 
-void expect_error(const Error& e, uint64_t offset, const std::string& text) {
-    EXPECT_EQ(e.offset, offset) << e.to_string();
-    EXPECT_NE(e.message.find(text), std::string::npos) << e.to_string();
-}
+using test::expect_error;
 
 TEST(WadMalformed, TooSmallForHeader) {
     auto bytes = test::write_wad(test::sample_wad());

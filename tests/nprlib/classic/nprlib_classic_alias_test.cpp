@@ -8,6 +8,7 @@
 #include "classic/alias_mesh.h"
 #include "classic/classic_renderer.h"
 #include "classic/player_colors.h"
+#include "classic_renderer_suite.h"
 #include "common/file_io.h"
 #include "formats/mdl.h"
 #include "support/nprlib_test_support.h"
@@ -131,19 +132,8 @@ nqr_camera side_camera() {
     return make_camera({-64.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f});
 }
 
-class ClassicAliasTest : public GlSuiteTest<ClassicAliasTest> {
+class ClassicAliasTest : public ClassicRendererSuite<ClassicAliasTest> {
   protected:
-    void SetUp() override {
-        GlSuiteTest::SetUp();
-        if (HasFatalFailure()) return;
-        std::string error;
-        ASSERT_TRUE(renderer_.init(&engine_.engine, &error)) << error;
-    }
-    void TearDown() override {
-        renderer_.shutdown();
-        EXPECT_EQ(renderer_.live_gl_objects(), 0);
-    }
-
     // A 16-unit box centred on its origin; pose 1 is the same box 32 units along +Y.
     void register_box(nqr_model_id id, AliasBuilder& b, uint8_t skin_index) {
         b.add_box_pose({0, 0, 0}, {16, 16, 16});
@@ -167,11 +157,6 @@ class ClassicAliasTest : public GlSuiteTest<ClassicAliasTest> {
         const glm::vec2 p = project(camera, world);
         return gl_->pixel(static_cast<int>(p.x), static_cast<int>(p.y));
     }
-
-    Rgb colour(int index) const { return palette_colour(engine_.palette, index); }
-
-    TestEngine engine_;
-    ClassicRenderer renderer_;
 };
 
 // Pixel bounds of the projected corners of the box [lo, hi].

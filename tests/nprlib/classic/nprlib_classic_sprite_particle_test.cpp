@@ -7,6 +7,7 @@
 #include "classic/classic_renderer.h"
 #include "classic/particle_drawer.h"
 #include "classic/sprite_orientation.h"
+#include "classic_renderer_suite.h"
 #include "support/nprlib_test_support.h"
 
 namespace nq::npr::test {
@@ -76,19 +77,8 @@ TEST(SpriteAxes, QuakeAngleVectorsAtZeroAreForwardXRightMinusYUpZ) {
 
 // ------------------------------------------------------------------ GPU
 
-class ClassicSpriteParticleTest : public GlSuiteTest<ClassicSpriteParticleTest> {
+class ClassicSpriteParticleTest : public ClassicRendererSuite<ClassicSpriteParticleTest> {
   protected:
-    void SetUp() override {
-        GlSuiteTest::SetUp();
-        if (HasFatalFailure()) return;
-        std::string error;
-        ASSERT_TRUE(renderer_.init(&engine_.engine, &error)) << error;
-    }
-    void TearDown() override {
-        renderer_.shutdown();
-        EXPECT_EQ(renderer_.live_gl_objects(), 0);
-    }
-
     std::vector<Rgb> draw(TestFrame& frame, const nqr_camera& camera, Rgb clear = {}) {
         gl_->clear(clear);
         const nqr_frame* f = frame.build(camera, 0);
@@ -102,11 +92,6 @@ class ClassicSpriteParticleTest : public GlSuiteTest<ClassicSpriteParticleTest> 
         const glm::vec2 p = project(camera, world);
         return gl_->pixel(static_cast<int>(p.x), static_cast<int>(p.y));
     }
-
-    Rgb colour(int index) const { return palette_colour(engine_.palette, index); }
-
-    TestEngine engine_;
-    ClassicRenderer renderer_;
 };
 
 nqr_camera front_camera(float distance = 64.0f, float fov = 90.0f) {

@@ -8,6 +8,7 @@
 #include "classic/classic_renderer.h"
 #include "classic/lightmap_atlas.h"
 #include "classic/surface_batches.h"
+#include "classic_renderer_suite.h"
 #include "support/nprlib_test_support.h"
 
 namespace nq::npr::test {
@@ -42,20 +43,8 @@ std::vector<uint8_t> uniform_image(int size, uint8_t index) {
     return make_image(size, size, [&](int, int) { return index; });
 }
 
-class ClassicWorldTest : public GlSuiteTest<ClassicWorldTest> {
+class ClassicWorldTest : public ClassicRendererSuite<ClassicWorldTest> {
   protected:
-    void SetUp() override {
-        GlSuiteTest::SetUp();
-        if (HasFatalFailure()) return;
-        std::string error;
-        ASSERT_TRUE(renderer_.init(&engine_.engine, &error)) << error;
-    }
-
-    void TearDown() override {
-        renderer_.shutdown();
-        EXPECT_EQ(renderer_.live_gl_objects(), 0);
-    }
-
     // Registers the built brush model as the world (id 1) covering surfaces [0, count).
     void register_world(BrushBuilder& builder, uint32_t count, bool with_lighting = true) {
         builder.build(with_lighting);
@@ -71,11 +60,6 @@ class ClassicWorldTest : public GlSuiteTest<ClassicWorldTest> {
         renderer_.draw_brush_entities(f);
         ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     }
-
-    Rgb colour(int index) const { return palette_colour(engine_.palette, index); }
-
-    TestEngine engine_;
-    ClassicRenderer renderer_;
 };
 
 TEST_F(ClassicWorldTest, FloorIsTextureScaledByLightmapWithOverbright) {
