@@ -105,6 +105,11 @@ bool Engine::start() {
         {"gamma", "1", kCvarArchive,
          "brightness: each colour becomes colour^gamma (below 1 brighter; 1 costs nothing)", 0.3f,
          3.0f});
+    cvars_.contrast = host_.cvars().register_cvar(
+        {"contrast", "1", kCvarArchive,
+         "each colour is multiplied by this before gamma, saturating at white (QuakeSpasm's; 1 "
+         "costs nothing)",
+         1.0f, 2.0f});
 
     mount_game_data();
     auto screen = Screen::open(options_, [this](std::string_view text) { print(text); });
@@ -302,7 +307,7 @@ void Engine::render(double frame_time) {
         frames_->draw_showroom(real_time, static_cast<float>(frame_time), frame_settings());
     }
     overlay_->draw(real_time, menu_screen());
-    screen_->apply_gamma(cvars_.gamma->value());
+    screen_->apply_levels({cvars_.gamma->value(), cvars_.contrast->value()});
     if (timed) gpu_timers.end_frame();
     trace.lap(TraceStage::Overlay);
     screen_->swap();

@@ -36,6 +36,7 @@ struct EngineCvars {
     Cvar* draw_viewmodel = nullptr;
     Cvar* occlusion = nullptr;
     Cvar* gamma = nullptr;
+    Cvar* contrast = nullptr;
     Cvar* host_framerate = nullptr;
     Cvar* menu_scale = nullptr;
 };

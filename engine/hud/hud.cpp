@@ -5,18 +5,35 @@
 namespace nq {
 
 Hud::Hud(HostCore& host) : host_(host), cvars_(register_hud_cvars(host.cvars())) {
-    CommandSystem& commands = host_.commands();
-    added_show_command_ = commands.add_command(
+    add_command(
         "+showscores", [this](const CommandArgs&) { show_scores_ = true; },
         "+showscores: show the scoreboard while the key is held");
-    added_hide_command_ = commands.add_command(
+    add_command(
         "-showscores", [this](const CommandArgs&) { show_scores_ = false; },
         "-showscores: back to the status bar");
+    // Quake's screen-size keys (default.cfg binds + and -): viewsize in steps of 10, within
+    // the cvar's 30..120.
+    add_command(
+        "sizeup", [this](const CommandArgs&) { step_viewsize(+kViewsizeStep); },
+        "sizeup: a larger view (viewsize + 10: fewer bars)");
+    add_command(
+        "sizedown", [this](const CommandArgs&) { step_viewsize(-kViewsizeStep); },
+        "sizedown: a smaller view (viewsize - 10: more bars)");
 }
 
 Hud::~Hud() {
-    if (added_show_command_) host_.commands().remove_command("+showscores");
-    if (added_hide_command_) host_.commands().remove_command("-showscores");
+    for (const std::string& name : added_commands_) host_.commands().remove_command(name);
+}
+
+void Hud::add_command(const char* name, CommandFn fn, const char* description) {
+    if (host_.commands().add_command(name, std::move(fn), description)) {
+        added_commands_.emplace_back(name);
+    }
+}
+
+void Hud::step_viewsize(float step) {
+    const float size = cvars_.viewsize->value() + step;
+    host_.cvars().set("viewsize", std::to_string(static_cast<int>(size)));  // clamped to range
 }
 
 std::vector<std::string> Hud::load_pictures(const Wad* gfx_wad, const Palette* palette,

@@ -53,6 +53,10 @@ class Hud {
     }
 
   private:
+    static constexpr float kViewsizeStep = 10.0f;
+    void add_command(const char* name, CommandFn fn, const char* description);
+    void step_viewsize(float step);
+
     HostCore& host_;
     HudCvars cvars_;
     std::optional<HudDrawer> drawer_;
@@ -61,8 +65,7 @@ class Hud {
     int fps_frames_ = 0;
     double fps_since_ = -1;
     float fps_ = 0;
-    bool added_show_command_ = false;  // only what it added is removed again
-    bool added_hide_command_ = false;
+    std::vector<std::string> added_commands_;  // only what it added is removed again
 };
 
 }  // namespace nq

@@ -18,10 +18,11 @@ void main() {
 constexpr const char* kFragmentSource = R"(#version 330 core
 uniform sampler2D frame;
 uniform float gamma;
+uniform float contrast;
 out vec4 out_colour;
 void main() {
     vec3 colour = texelFetch(frame, ivec2(gl_FragCoord.xy), 0).rgb;
-    out_colour = vec4(pow(colour, vec3(gamma)), 1.0);
+    out_colour = vec4(pow(min(colour * contrast, vec3(1.0)), vec3(gamma)), 1.0);
 }
 )";
 
@@ -80,6 +81,7 @@ Result<GammaPass> GammaPass::create() {
 GammaPass::GammaPass(npr::gl::Program program)
     : program_(std::move(program)), empty_vertex_array_(npr::gl::VertexArray::create(nullptr)) {
     gamma_location_ = glGetUniformLocation(program_.id(), "gamma");
+    contrast_location_ = glGetUniformLocation(program_.id(), "contrast");
     GLint previous = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
     glUseProgram(program_.id());
@@ -87,8 +89,11 @@ GammaPass::GammaPass(npr::gl::Program program)
     glUseProgram(static_cast<GLuint>(previous));
 }
 
-void GammaPass::apply(float gamma, int width, int height) {
-    if (gamma == 1.0f || !(gamma > 0) || width <= 0 || height <= 0) return;
+void GammaPass::apply(const ScreenLevels& levels, int width, int height) {
+    if (levels.identity() || !(levels.gamma > 0) || !(levels.contrast > 0) || width <= 0 ||
+        height <= 0) {
+        return;
+    }
     GammaStateRestore restore;
     if (!frame_copy_ || copy_width_ != width || copy_height_ != height) {
         if (!frame_copy_) frame_copy_ = npr::gl::Texture::create(nullptr);
@@ -104,7 +109,8 @@ void GammaPass::apply(float gamma, int width, int height) {
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, width, height);
     glViewport(0, 0, width, height);
     glUseProgram(program_.id());
-    glUniform1f(gamma_location_, gamma);
+    glUniform1f(gamma_location_, levels.gamma);
+    glUniform1f(contrast_location_, levels.contrast);
     glBindVertexArray(empty_vertex_array_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

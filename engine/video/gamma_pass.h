@@ -1,10 +1,11 @@
-// The `gamma` cvar, as QuakeSpasm applies it: every colour channel of the finished frame
-// becomes channel^gamma (below 1 brighter, above 1 darker). The frame is copied into a texture
-// and drawn back through a small shader -- a full-screen pass, so it runs only when gamma is
-// not 1; at gamma 1 apply() returns at once and costs nothing.
+// The `gamma` and `contrast` cvars, as QuakeSpasm applies them: every colour channel of the
+// finished frame becomes min(channel * contrast, 1)^gamma (gamma below 1 brighter, above 1
+// darker; contrast above 1 brighter, saturating). The frame is copied into a texture and drawn
+// back through a small shader -- a full-screen pass, so it runs only when either is not 1; at
+// gamma 1 and contrast 1 apply() returns at once and costs nothing.
 //
 //   auto pass = GammaPass::create();                 // a GL context must be current
-//   after the last thing drawn, before the swap: pass->apply(gamma, width, height);
+//   after the last thing drawn, before the swap: pass->apply({gamma, contrast}, width, height);
 //
 // apply() works on (0, 0, width, height) of the bound framebuffer and puts back the GL state
 // it changes (program, vertex array, texture binding, blending, depth, cull, scissor,
@@ -16,11 +17,17 @@
 
 namespace nq {
 
+struct ScreenLevels {
+    float gamma = 1.0f;
+    float contrast = 1.0f;
+    bool identity() const { return gamma == 1.0f && contrast == 1.0f; }
+};
+
 class GammaPass {
   public:
     static Result<GammaPass> create();
 
-    void apply(float gamma, int width, int height);
+    void apply(const ScreenLevels& levels, int width, int height);
 
   private:
     explicit GammaPass(npr::gl::Program program);
@@ -30,6 +37,7 @@ class GammaPass {
     npr::gl::Texture frame_copy_;
     int copy_width_ = 0, copy_height_ = 0;
     GLint gamma_location_ = -1;
+    GLint contrast_location_ = -1;
 };
 
 }  // namespace nq

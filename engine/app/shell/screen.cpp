@@ -48,8 +48,8 @@ void Screen::set_relative_mouse(bool on) {
     relative_mouse_ = on;
 }
 
-void Screen::apply_gamma(float gamma) {
-    if (gamma_pass_) gamma_pass_->apply(gamma, width(), height());
+void Screen::apply_levels(const ScreenLevels& levels) {
+    if (gamma_pass_) gamma_pass_->apply(levels, width(), height());
 }
 
 void Screen::swap() {

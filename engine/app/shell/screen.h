@@ -46,8 +46,9 @@ class Screen {
     void set_text_input(bool on) { window_.set_text_input(on); }
     void set_relative_mouse(bool on);  // only a change reaches SDL
 
-    // The frame's last passes: colour^gamma over the whole screen, then the swap.
-    void apply_gamma(float gamma);
+    // The frame's last passes: min(colour * contrast, 1)^gamma over the whole screen, then the
+    // swap.
+    void apply_levels(const ScreenLevels& levels);
     void swap();
 
   private:

@@ -66,14 +66,31 @@ TEST_F(ShellTest, GammaRaisesEachChannelToItsPower) {
     glViewport(0, 0, kWidth, kHeight);
     glClearColor(0.25f, 0.25f, 0.25f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    screen_->apply_gamma(1.0f);  // costs nothing, changes nothing
+    screen_->apply_levels({1.0f, 1.0f});  // costs nothing, changes nothing
     EXPECT_NEAR(read_screen(kWidth, kHeight)[0], 64, 1);
-    screen_->apply_gamma(0.5f);
+    screen_->apply_levels({0.5f, 1.0f});
     const std::vector<uint8_t> pixels = read_screen(kWidth, kHeight);
     const double expected = std::pow(64.0 / 255.0, 0.5) * 255.0;  // 0.25^0.5 = 0.5
     for (size_t i = 0; i < pixels.size(); i += 4 * 997) {
         EXPECT_NEAR(pixels[i], expected, 2.0) << "pixel " << i / 4;
     }
+}
+
+// QuakeSpasm's `contrast` (LibreQuake's default.cfg sets it): each channel times contrast,
+// saturating at white, before gamma.
+TEST_F(ShellTest, ContrastScalesEachChannelBeforeGammaAndSaturates) {
+    glViewport(0, 0, kWidth, kHeight);
+    glClearColor(0.25f, 0.6f, 0.1f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const std::vector<uint8_t> before = read_screen(kWidth, kHeight);
+    screen_->apply_levels({0.8f, 2.0f});
+    const std::vector<uint8_t> after = read_screen(kWidth, kHeight);
+    for (int c = 0; c < 3; ++c) {
+        const double scaled = std::min(1.0, before[c] / 255.0 * 2.0);
+        EXPECT_NEAR(after[c], std::pow(scaled, 0.8) * 255.0, 2.0) << "channel " << c;
+    }
+    EXPECT_EQ(after[1], 255) << "0.6 x 2 saturates";
+    EXPECT_EQ(after[kWidth * 4 * (kHeight / 2) + 4 * (kWidth / 3)], after[0]) << "every pixel";
 }
 
 TEST_F(ShellTest, VideoCvarsStartAtTheOpenModeAndACommandLineSizeLocksIt) {
