@@ -10,8 +10,9 @@ namespace nq {
 
 namespace {
 
-// What 1.x and 2.0 share byte for byte: an entity up to its light, a light up to its list, the
-// camera, and a frame's fields up to the camera.
+// What 1.x and 2.0 share byte for byte: an entity up to `effects` (2.0 then points to its
+// light), a light up to its list, the camera, and a frame's fields up to the camera.
+// 1.x services have no context, so the one global of the engine's plugin side lives here.
 constexpr size_t kSharedEntityBytes = offsetof(nqr1_entity, effects) + sizeof(uint32_t);
 static_assert(offsetof(nqr1_entity, effects) == offsetof(nqr_entity, effects));
 static_assert(offsetof(nqr1_entity_light, num_lights) == offsetof(nqr_entity_light, num_lights));
