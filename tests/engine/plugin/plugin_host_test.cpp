@@ -9,6 +9,7 @@
 
 #include "plugin/plugin_host.h"
 #include "support/build_paths.h"
+#include "support/null_engine_services.h"
 
 namespace nq {
 namespace {
@@ -20,8 +21,8 @@ struct ProbeCounters {
 };
 
 // Records what plugins asked of the engine.
-class FakeServices : public EngineServices {
-public:
+class FakeServices : public test::NullEngineServices {
+  public:
     void log(int, std::string_view text) override { logs.emplace_back(text); }
     const nqr_cvar* register_cvar(OwnerId, const char* name, const char* def, uint32_t,
                                   const char*) override {
@@ -29,7 +30,6 @@ public:
         if (!c.string) c = nqr_cvar{sizeof(nqr_cvar), std::stof(def), std::stoi(def), def, 0};
         return &c;
     }
-    void set_cvar(const char*, const char*) override {}
     // Same-named commands stack up: during a swap the old and the new plugin both hold one,
     // and releasing the old owner must leave the new one's in place.
     bool register_command(OwnerId owner, const char* name, nqr_command_fn, void*,
@@ -42,16 +42,11 @@ public:
         std::erase_if(commands, [](const auto& kv) { return kv.second.empty(); });
         released.push_back(owner);
     }
-    bool read_file(const char*, std::vector<uint8_t>&) override { return false; }
     // Something to hand out: no plugin here draws, but one may look its GL functions up.
     void* gl_proc_address(const char*) override { return reinterpret_cast<void*>(&no_gl); }
     static void no_gl() {}
-    double real_time() override { return 0; }
-    void trace(const float*, const float*, nqr_trace*) override {}
     const uint8_t* palette() override { return palette_bytes; }
     const uint8_t* colormap() override { return colormap_bytes; }
-    void gpu_pass_begin(const char*) override {}
-    void gpu_pass_end() override {}
 
     std::vector<std::string> logs;
     std::map<std::string, nqr_cvar> cvars;
