@@ -16,7 +16,7 @@ namespace {
 std::array<int, 3> centre_after(GammaPass& pass, float gamma, float grey) {
     glClearColor(grey, grey / 2, 1.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    pass.apply(gamma, 64, 48);
+    pass.apply({gamma, 1.0f}, 64, 48);
     auto image = read_framebuffer_rgb(0, 64, 48);
     EXPECT_TRUE(image) << image.error().message;
     if (!image) return {};
@@ -52,7 +52,7 @@ TEST(GammaPass, PutsBackTheStateItChanges) {
     glEnable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     glViewport(3, 4, 20, 10);
-    pass->apply(0.7f, 64, 48);
+    pass->apply({0.7f, 1.0f}, 64, 48);
     EXPECT_TRUE(glIsEnabled(GL_BLEND));
     EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST));
     GLint viewport[4] = {};
